@@ -1,0 +1,35 @@
+#pragma once
+// The bar benchmark (paper §4.3, Fig. 12, Table 3; SPEC §2.1), limit mode.
+//
+// Square cross-section ADEG of a long bar, side L = 40 mm, plane strain:
+// A = (0,0), D = (L,0), E = (L,L), G = (0,L). u₁ = 0 on DE; u₁ = u₂ = 0 at D. Tractions
+// F1 = 10 daN/mm² on AG (+x) and F2 = -5 daN/mm² on GE (y). Contact zone AD against a rigid
+// flat foundation, friction f = 1; the contact nodes are the nodes of AD except D.
+#include "core/fem/model.h"
+#include "core/interface/interface.h"
+#include "core/mesh/structured_rectangle.h"
+
+namespace thinlayer::bar {
+
+constexpr double side = 40.0;        // L, mm
+constexpr double lambda_m = 4500.0;  // daN/mm² (45 GPa)
+constexpr double mu_m = 5400.0;      // daN/mm² (54 GPa)
+constexpr double F1 = 10.0;          // daN/mm², on AG, along +x
+constexpr double F2 = -5.0;          // daN/mm², on GE, along y
+constexpr double friction = 1.0;
+
+struct MeshOptions {
+  int nx = 32, ny = 32;  // elements along AD and along DE
+  ElementType element = ElementType::Q1;
+  TriangleDiagonal diagonal = TriangleDiagonal::Right;  // P1 only
+  PlaneHypothesis plane = PlaneHypothesis::Strain;
+};
+
+// Body 0 is the bar; Dirichlet conditions "DE" (u₁ on DE) and "D" (u₂ at D); tractions
+// "AG" and "GE".
+Model make_model(const MeshOptions& options = {});
+
+// The limit-mode interface "S" on AD (without D), carrying the given law.
+Interface make_interface(const Model& model, const InterfaceLaw& law);
+
+}  // namespace thinlayer::bar

@@ -1,0 +1,16 @@
+#pragma once
+// Bilinear quadrilateral (Q1), full 2×2 Gauss integration.
+#include <Eigen/Core>
+
+namespace thinlayer {
+
+using Matrix8d = Eigen::Matrix<double, 8, 8>;
+using Coords4 = Eigen::Matrix<double, 4, 2>;
+
+// Element stiffness, DOF order (u1,u2) per node in the cell's node order (per unit thickness).
+Matrix8d q1_stiffness(const Coords4& xy, const Eigen::Matrix3d& D);
+
+// Strain-displacement matrix B (3×8) at reference point (xi, eta) ∈ [-1,1]²; detJ returned.
+Eigen::Matrix<double, 3, 8> q1_strain_matrix(const Coords4& xy, double xi, double eta, double& detJ);
+
+}  // namespace thinlayer

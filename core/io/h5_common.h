@@ -1,0 +1,63 @@
+#pragma once
+// Small helpers shared by the HDF5 writer and reader (private to core/io; includes <hdf5.h>).
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include <hdf5.h>
+
+namespace thinlayer::h5 {
+
+static_assert(std::is_same_v<hid_t, std::int64_t>, "the HDF5 wrappers store hid_t as std::int64_t");
+
+// Owns one HDF5 identifier and releases it with the matching H5?close function.
+class Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  Handle(hid_t id, Closer close) : id_(id), close_(close) {}
+  Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, -1)), close_(other.close_) {}
+  Handle& operator=(Handle&& other) noexcept {
+    std::swap(id_, other.id_);
+    std::swap(close_, other.close_);
+    return *this;
+  }
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  hid_t get() const { return id_; }
+
+ private:
+  hid_t id_;
+  Closer close_;
+};
+
+// With automatic printing off, the innermost entry of HDF5's error stack is the only place
+// that says what actually went wrong (e.g. "object 'x' doesn't exist").
+inline std::string hdf5_reason() {
+  std::string reason;
+  auto innermost = [](unsigned n, const H5E_error2_t* error, void* out) -> herr_t {
+    if (n == 0 && error->desc != nullptr) *static_cast<std::string*>(out) = error->desc;
+    return 0;
+  };
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, innermost, &reason);
+  return reason;
+}
+
+// HDF5 reports failure as a negative id or status.
+template <typename Id>
+Id check(Id id, const std::string& what) {
+  if (id < 0) {
+    const std::string reason = hdf5_reason();
+    throw std::runtime_error(what + (reason.empty() ? "" : ": " + reason));
+  }
+  return id;
+}
+
+// "'/a/b' in 'out.h5'", the object named in every error message.
+inline std::string at(const std::string& object, const std::string& file_name) {
+  return "'" + object + "' in '" + file_name + "'";
+}
+
+}  // namespace thinlayer::h5

@@ -1,0 +1,82 @@
+#pragma once
+// Writes one HDF5 result file, all or nothing.
+//
+// The data go to a temporary file next to the target (`<path>.tmp.<pid>.<n>`); commit()
+// closes it and renames it onto the target, which is atomic on POSIX file systems. A writer
+// destroyed without commit() (for instance while an exception unwinds) deletes the temporary
+// file, so a reader never sees a half-written result.
+//
+// Object paths are absolute or relative to the root ("/" is the root, "a/b" means "/a/b").
+// Missing parent groups are created. Writing an object or attribute that already exists
+// throws: a result file is written once, and a duplicate name is a bug in the caller.
+//
+// Stored types: doubles as IEEE float64, int datasets as int32, integer attributes as int64,
+// strings as variable-length UTF-8 (h5py returns attributes as `str`; string datasets as
+// `bytes` unless read through `.asstr()`). NaN and Inf are written as given.
+//
+// Every failure throws std::runtime_error naming the file and the object. HDF5's own error
+// printing is turned off for the constructing thread (HDF5 keeps that setting per thread).
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace thinlayer {
+
+class H5Writer {
+ public:
+  using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  using RowMatrixXi = Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+  // Throws, creating nothing, if the target's directory is missing or not writable.
+  explicit H5Writer(const std::string& path);
+  ~H5Writer();
+  H5Writer(const H5Writer&) = delete;
+  H5Writer& operator=(const H5Writer&) = delete;
+
+  // Closes the file and moves it onto the target path. No other call is allowed afterwards.
+  void commit();
+  const std::string& path() const { return path_; }
+
+  void group(const std::string& path);
+
+  // Scalar attributes on the group or dataset at object_path (a missing group is created).
+  void attr(const std::string& object_path, const std::string& name, double value);
+  void attr(const std::string& object_path, const std::string& name, const std::string& value);
+  template <std::integral T>
+  void attr(const std::string& object_path, const std::string& name, T value) {
+    if constexpr (std::is_unsigned_v<T> && sizeof(T) >= sizeof(long long)) {
+      if (value > static_cast<T>(std::numeric_limits<long long>::max()))
+        throw std::runtime_error("attribute '" + name + "' on '" + object_path + "' in '" +
+                                 path_ + "' does not fit in int64");
+    }
+    attr_int64(object_path, name, static_cast<long long>(value));
+  }
+
+  // 2-D datasets: a rows x cols matrix appears in h5py with shape (rows, cols).
+  void dataset(const std::string& path, const Eigen::Ref<const RowMatrixXd>& values);
+  void dataset(const std::string& path, const Eigen::Ref<const RowMatrixXi>& values);
+  void dataset(const std::string& path, const double* data, std::size_t rows, std::size_t cols);
+  void dataset(const std::string& path, const int* data, std::size_t rows, std::size_t cols);
+  // 1-D datasets.
+  void dataset(const std::string& path, const std::vector<double>& values);
+  void dataset(const std::string& path, const std::vector<int>& values);
+  void dataset(const std::string& path, const std::vector<std::string>& values);
+
+ private:
+  void attr_int64(const std::string& object_path, const std::string& name, long long value);
+  std::int64_t file() const;  // the open file's id; throws after commit()
+
+  std::string path_;
+  std::string tmp_path_;
+  std::int64_t file_ = -1;  // hid_t, kept as its underlying type so <hdf5.h> stays private
+  bool committed_ = false;
+};
+
+}  // namespace thinlayer

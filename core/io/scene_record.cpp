@@ -1,0 +1,116 @@
+#include "core/io/scene_record.h"
+
+#include <stdexcept>
+
+namespace thinlayer {
+
+StatusCount InterfaceFields::counts() const {
+  std::vector<NodeStatus> s;
+  for (int v : status) s.push_back(static_cast<NodeStatus>(v));
+  return count_statuses(s);
+}
+
+std::vector<InterfaceFields> interface_fields(const ContactProblem& problem, const SolveReport& report,
+                                              double status_tolerance) {
+  const Eigen::VectorXd g = problem.jumps(report.u);
+  std::vector<InterfaceFields> result;
+  int k = 0;
+  for (const Interface& interface : problem.interfaces()) {
+    const int m = static_cast<int>(interface.nodes.size());
+    InterfaceFields f;
+    f.name = interface.name;
+    f.x.resize(m, 2);
+    f.normal.resize(m, 2);
+    f.length.resize(m);
+    f.jump_N.resize(m);
+    f.jump_T.resize(m);
+    f.sigma_N.resize(m);
+    f.sigma_T.resize(m);
+    for (int i = 0; i < m; ++i, ++k) {
+      const InterfaceNode& node = interface.nodes[i];
+      f.x.row(i) = node.x.transpose();
+      f.normal.row(i) = node.normal.transpose();
+      f.length[i] = node.length;
+      f.jump_N[i] = g[2 * k];
+      f.jump_T[i] = g[2 * k + 1];
+      f.sigma_N[i] = report.r[2 * k] / node.length;
+      f.sigma_T[i] = report.r[2 * k + 1] / node.length;
+    }
+    const std::vector<InterfaceLaw> laws(m, interface.law);
+    for (NodeStatus s : classify_statuses(laws, f.sigma_N, f.sigma_T, status_tolerance))
+      f.status.push_back(static_cast<int>(s));
+    result.push_back(std::move(f));
+  }
+  return result;
+}
+
+SceneRecord record_scene(const std::string& id, const Model& model, const ContactProblem& problem,
+                         const SolveReport& report, double status_tolerance) {
+  SceneRecord s;
+  s.id = id;
+  int num_nodes = 0, num_cells = 0, per_cell = 0;
+  for (const Body& b : model.bodies) {
+    num_nodes += b.mesh.num_nodes();
+    num_cells += b.mesh.num_cells();
+    per_cell = std::max(per_cell, b.mesh.element == ElementType::Q1 ? 4 : 3);
+  }
+  s.nodes.resize(num_nodes, 2);
+  s.cells = H5Writer::RowMatrixXi::Constant(num_cells, per_cell, -1);  // -1 pads a mixed mesh
+  int node_offset = 0, cell = 0;
+  for (const Body& b : model.bodies) {
+    s.nodes.middleRows(node_offset, b.mesh.num_nodes()) = b.mesh.nodes;
+    for (const auto& q : b.mesh.quads) {
+      for (int a = 0; a < 4; ++a) s.cells(cell, a) = node_offset + q[a];
+      ++cell;
+    }
+    for (const auto& t : b.mesh.triangles) {
+      for (int a = 0; a < 3; ++a) s.cells(cell, a) = node_offset + t[a];
+      ++cell;
+    }
+    node_offset += b.mesh.num_nodes();
+  }
+  const Eigen::VectorXd u_full = problem.system().expand(report.u);
+  s.u = Eigen::Map<const H5Writer::RowMatrixXd>(u_full.data(), num_nodes, 2);
+  s.interfaces = interface_fields(problem, report, status_tolerance);
+  const Eigen::VectorXd interface_force = problem.B().transpose() * report.r;
+  s.reactions = problem.system().reactions(u_full, problem.system().scatter(interface_force));
+  s.text["solver"] = report.solver;
+  s.text["solver_message"] = report.message;
+  s.integers["iterations"] = report.iterations;
+  s.integers["converged"] = report.converged ? 1 : 0;
+  s.numbers["residual"] = report.residual.value();
+  s.numbers["residual_interface"] = report.residual.interface;
+  s.numbers["residual_bulk"] = report.residual.bulk;
+  s.numbers["tolerance"] = report.tolerance;
+  s.numbers["wall_time_s"] = report.wall_time_s;
+  s.numbers["status_tolerance"] = status_tolerance;
+  s.integers["num_nodes"] = num_nodes;
+  s.integers["num_cells"] = num_cells;
+  return s;
+}
+
+void write_scene(H5Writer& file, const SceneRecord& scene) {
+  const std::string g = "/scenes/" + scene.id;
+  file.group(g);
+  for (const auto& [name, value] : scene.text) file.attr(g, name, value);
+  for (const auto& [name, value] : scene.numbers) file.attr(g, name, value);
+  for (const auto& [name, value] : scene.integers) file.attr(g, name, value);
+  file.dataset(g + "/mesh/nodes", scene.nodes);
+  file.dataset(g + "/mesh/cells", scene.cells);
+  file.dataset(g + "/u", scene.u);
+  for (const InterfaceFields& f : scene.interfaces) {
+    const std::string p = g + "/interface/" + f.name;
+    auto vec = [](const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
+    file.dataset(p + "/x", f.x);
+    file.dataset(p + "/normal", f.normal);
+    file.dataset(p + "/length", vec(f.length));
+    file.dataset(p + "/jump_N", vec(f.jump_N));
+    file.dataset(p + "/jump_T", vec(f.jump_T));
+    file.dataset(p + "/sigma_N", vec(f.sigma_N));
+    file.dataset(p + "/sigma_T", vec(f.sigma_T));
+    file.dataset(p + "/status", f.status);
+  }
+  for (const auto& [name, R] : scene.reactions) file.dataset(g + "/reactions/" + name, std::vector<double>{R.x(), R.y()});
+}
+
+}  // namespace thinlayer

@@ -1,0 +1,52 @@
+#pragma once
+// One solved scene in the output schema of SPEC §4 (/scenes/<id> in an HDF5 file).
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/fem/model.h"
+#include "core/io/h5_writer.h"
+#include "core/solvers/contact_problem.h"
+#include "core/solvers/solve_report.h"
+
+namespace thinlayer {
+
+// Fields along one interface, SPEC §1.2 signs.
+struct InterfaceFields {
+  std::string name;
+  H5Writer::RowMatrixXd x, normal;                  // M×2, mm and unit
+  Eigen::VectorXd length;                           // tributary length, mm
+  Eigen::VectorXd jump_N, jump_T;                   // mm
+  Eigen::VectorXd sigma_N, sigma_T;                 // daN/mm²
+  std::vector<int> status;                          // 0 gap, 1 slide, 2 stick
+  StatusCount counts() const;
+};
+
+struct SceneRecord {
+  std::string id;
+  std::map<std::string, std::string> text;        // case, mode, law_case, plane, element, solver, ...
+  std::map<std::string, double> numbers;          // eps, gamma, delta, lambda_bar, mu_bar, friction, ...
+  std::map<std::string, long long> integers;      // iterations, converged, mesh descriptors, ...
+  H5Writer::RowMatrixXd nodes;                    // N×2, all bodies, mm
+  H5Writer::RowMatrixXi cells;                    // 4 (Q1) or 3 (P1) node indices per cell
+  H5Writer::RowMatrixXd u;                        // N×2, mm
+  std::vector<InterfaceFields> interfaces;
+  std::map<std::string, Eigen::Vector2d> reactions;  // daN per unit thickness
+};
+
+// Interface fields of a solution: jumps g = B u + g_D, stresses σ = r / ℓ, statuses with the
+// given relative tolerance (SPEC §1.2), one entry per interface of the problem.
+std::vector<InterfaceFields> interface_fields(const ContactProblem& problem, const SolveReport& report,
+                                              double status_tolerance);
+
+// Everything the solve produced: mesh, displacement, interfaces, reactions, and the solver's
+// attributes (solver, iterations, residual, converged, wall_time_s, ...). Case attributes
+// (case, mode, law_case, eps, ...) are the caller's to add.
+SceneRecord record_scene(const std::string& id, const Model& model, const ContactProblem& problem,
+                         const SolveReport& report, double status_tolerance);
+
+void write_scene(H5Writer& file, const SceneRecord& scene);
+
+}  // namespace thinlayer

@@ -1,0 +1,131 @@
+#include "core/solvers/contact_problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace thinlayer {
+
+namespace {
+
+// Stiffness of one node of one body against a unit displacement along e, from the diagonal
+// 2×2 block of the free stiffness matrix.
+double nodal_stiffness(const LinearSystem& system, int global_dof_x, const Eigen::Vector2d& e) {
+  const int ix = system.free_index(global_dof_x), iy = system.free_index(global_dof_x + 1);
+  if (ix < 0 || iy < 0)
+    throw std::runtime_error("interface node with a prescribed displacement component is not supported");
+  const auto& K = system.K();
+  return e.x() * e.x() * K.coeff(ix, ix) + 2 * e.x() * e.y() * K.coeff(ix, iy) + e.y() * e.y() * K.coeff(iy, iy);
+}
+
+double clamp_abs(double value, double bound) { return std::clamp(value, -bound, bound); }
+
+}  // namespace
+
+ContactProblem::ContactProblem(const LinearSystem& system, std::vector<Interface> interfaces)
+    : system_(&system), interfaces_(std::move(interfaces)) {
+  for (int i = 0; i < static_cast<int>(interfaces_.size()); ++i)
+    for (const InterfaceNode& n : interfaces_[i].nodes) {
+      nodes_.push_back(n);
+      interface_of_.push_back(i);
+    }
+  const int m = num_nodes();
+  g_D_ = Eigen::VectorXd::Zero(2 * m);
+  C_ = Eigen::VectorXd::Zero(2 * m);
+  kappa_ = Eigen::VectorXd::Zero(2 * m);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int k = 0; k < m; ++k) {
+    const InterfaceNode& n = nodes_[k];
+    const InterfaceLaw& law = this->law(k);
+    const Eigen::Vector2d e[2] = {n.normal, n.tangent()};
+    // [u]_N = n·(u⁻ - u⁺), [u]_T = t·(u⁺ - u⁻): the plus side enters with -n and +t.
+    const double plus_sign[2] = {-1, +1};
+    for (int row = 0; row < 2; ++row) {
+      auto add_side = [&](int dof_x, double sign) {
+        for (int c = 0; c < 2; ++c) {
+          const double coef = sign * plus_sign[row] * e[row][c];
+          const int free = system.free_index(dof_x + c);
+          if (free >= 0)
+            triplets.emplace_back(2 * k + row, free, coef);
+          else
+            g_D_[2 * k + row] += coef * system.prescribed_value(dof_x + c);
+        }
+      };
+      add_side(n.plus_dof_x, +1);
+      if (!n.on_foundation()) add_side(n.minus_dof_x, -1);
+
+      const double K = row == 0 ? law.K_N() : law.K_T();
+      C_[2 * k + row] = 1.0 / (K * n.length);
+      double flexibility = 1.0 / nodal_stiffness(system, n.plus_dof_x, e[row]);
+      if (!n.on_foundation()) flexibility += 1.0 / nodal_stiffness(system, n.minus_dof_x, e[row]);
+      if (std::isfinite(C_[2 * k + row])) flexibility += C_[2 * k + row];
+      kappa_[2 * k + row] = 1.0 / flexibility;
+    }
+  }
+  B_.resize(2 * m, system.num_free());
+  B_.setFromTriplets(triplets.begin(), triplets.end());
+}
+
+Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, const Eigen::Vector2d& d,
+                            const Eigen::Vector2d& kappa) {
+  Eigen::Vector2d R;
+  const double p = -r[0];  // contact pressure force, ≥ 0 in compression
+  R[0] = law.normal_active() ? p - std::max(0.0, p + kappa[0] * d[0]) : r[0];
+  const double threshold = law.tangential_active() ? law.friction * std::max(p, 0.0) : 0.0;
+  R[1] = law.K_T() > 0 ? r[1] - clamp_abs(r[1] - kappa[1] * d[1], threshold) : r[1];
+  return R;
+}
+
+Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& u_free,
+                          const Eigen::VectorXd& r) {
+  const LinearSystem& system = problem.system();
+  const Eigen::VectorXd interface_force = problem.B().transpose() * r;
+  const Eigen::VectorXd imbalance = system.K() * u_free - system.F() - interface_force;
+  Residual res;
+  const double bulk_scale = std::max(system.F().norm(), interface_force.norm());
+  res.bulk = imbalance.norm() / (bulk_scale > 0 ? bulk_scale : 1.0);
+
+  const Eigen::VectorXd g = problem.jumps(u_free);
+  double map_norm2 = 0;
+  for (int k = 0; k < problem.num_nodes(); ++k) {
+    Eigen::Vector2d d;
+    for (int row = 0; row < 2; ++row) {
+      const double c = problem.compliance()[2 * k + row];
+      d[row] = g[2 * k + row] + (std::isfinite(c) ? c * r[2 * k + row] : 0.0);
+    }
+    const Eigen::Vector2d R = natural_map(problem.law(k), r.segment<2>(2 * k), d, problem.kappa().segment<2>(2 * k));
+    map_norm2 += R.squaredNorm();
+  }
+  const double interface_scale = r.norm() > 0 ? r.norm() : system.F().norm();
+  res.interface = std::sqrt(map_norm2) / (interface_scale > 0 ? interface_scale : 1.0);
+  return res;
+}
+
+std::vector<NodeStatus> classify_statuses(const std::vector<InterfaceLaw>& laws,
+                                          const Eigen::VectorXd& sigma_N,
+                                          const Eigen::VectorXd& sigma_T, double tolerance) {
+  const double scale = sigma_N.size() > 0 ? sigma_N.cwiseAbs().maxCoeff() : 0.0;
+  std::vector<NodeStatus> status(sigma_N.size());
+  for (int k = 0; k < sigma_N.size(); ++k) {
+    const double pressure = -sigma_N[k];
+    if (!(pressure > tolerance * scale)) {
+      status[k] = NodeStatus::Gap;
+      continue;
+    }
+    const double threshold = laws[k].friction * pressure;
+    status[k] = std::abs(sigma_T[k]) >= (1 - tolerance) * threshold ? NodeStatus::Slide : NodeStatus::Stick;
+  }
+  return status;
+}
+
+StatusCount count_statuses(const std::vector<NodeStatus>& statuses) {
+  StatusCount c;
+  for (NodeStatus s : statuses) {
+    if (s == NodeStatus::Gap) ++c.gap;
+    else if (s == NodeStatus::Slide) ++c.slide;
+    else ++c.stick;
+  }
+  return c;
+}
+
+}  // namespace thinlayer

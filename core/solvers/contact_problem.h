@@ -1,0 +1,79 @@
+#pragma once
+// The discrete interface problem shared by every solver (paper §4, SPEC §1.4-1.5):
+//
+//   K u = F + Bᵀ r,       jumps g = B u + g_D,       d = g + C r,
+//
+// with one (N, T) pair of rows per interface node: r = (r_N, r_T) are the nodal interface
+// forces acting on the plus side (daN per unit thickness: r = ℓ σ), C = diag(1 / (K ℓ)) the
+// compliance of the layer's springs (0 for a rigid law), and d the part of the jump taken by
+// the stop and the skidding block. At every node the law then reads (Signorini-Coulomb on d):
+//   r_N ≤ 0, d_N ≤ 0, r_N d_N = 0;   |r_T| ≤ f |r_N|, d_T = -ζ r_T, ζ ≥ 0,
+// and r_N = 0 (r_T = 0) wherever K_N = 0 (K_T = 0).
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "core/fem/linear_system.h"
+#include "core/interface/interface.h"
+
+namespace thinlayer {
+
+enum class NodeStatus { Gap = 0, Slide = 1, Stick = 2 };
+
+class ContactProblem {
+ public:
+  ContactProblem(const LinearSystem& system, std::vector<Interface> interfaces);
+
+  const LinearSystem& system() const { return *system_; }
+  const std::vector<Interface>& interfaces() const { return interfaces_; }
+  int num_nodes() const { return static_cast<int>(nodes_.size()); }  // all interfaces, in order
+  const InterfaceNode& node(int k) const { return nodes_[k]; }
+  const InterfaceLaw& law(int k) const { return interfaces_[interface_of_[k]].law; }
+  int interface_of(int k) const { return interface_of_[k]; }
+
+  const Eigen::SparseMatrix<double>& B() const { return B_; }     // 2m × free DOFs
+  const Eigen::VectorXd& jump_offset() const { return g_D_; }      // 2m, mm
+  const Eigen::VectorXd& compliance() const { return C_; }         // 2m, mm/daN (may be +inf)
+  // Natural-map scaling per row (daN/mm): the local stiffness seen by that interface
+  // component, so that r - proj(r - κ d) is a force.
+  const Eigen::VectorXd& kappa() const { return kappa_; }
+
+  Eigen::VectorXd jumps(const Eigen::VectorXd& u_free) const { return B_ * u_free + g_D_; }
+
+ private:
+  const LinearSystem* system_;
+  std::vector<Interface> interfaces_;
+  std::vector<InterfaceNode> nodes_;
+  std::vector<int> interface_of_;
+  Eigen::SparseMatrix<double> B_;
+  Eigen::VectorXd g_D_, C_, kappa_;
+};
+
+// SPEC §1.5: the norm of the natural map of the interface conditions relative to the norm of
+// the interface forces (or of the external forces when there are none), and the relative
+// equilibrium residual of the bulk, ‖K u - F - Bᵀ r‖ / max(‖F‖, ‖Bᵀ r‖).
+struct Residual {
+  double interface = 0;
+  double bulk = 0;
+  double value() const { return std::max(interface, bulk); }
+};
+Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& u_free,
+                          const Eigen::VectorXd& r);
+
+// Natural map of one node's law, given its forces r = (r_N, r_T) and d = (d_N, d_T).
+Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, const Eigen::Vector2d& d,
+                            const Eigen::Vector2d& kappa);
+
+// Gap / slide / stick from the nodal stresses (SPEC §1.2), with a relative tolerance: gap when
+// |σ_N| ≤ tol · max|σ_N| over the interface, slide when |σ_T| ≥ (1 - tol) f |σ_N|.
+struct StatusCount {
+  int gap = 0, slide = 0, stick = 0;
+};
+std::vector<NodeStatus> classify_statuses(const std::vector<InterfaceLaw>& laws,
+                                          const Eigen::VectorXd& sigma_N,
+                                          const Eigen::VectorXd& sigma_T, double tolerance);
+StatusCount count_statuses(const std::vector<NodeStatus>& statuses);
+
+}  // namespace thinlayer

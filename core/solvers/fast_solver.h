@@ -1,0 +1,19 @@
+#pragma once
+// The project's default solver (SPEC §1.5): condensation onto the interface, then a
+// primal-dual active-set method — a semismooth Newton method on the natural map of the
+// Signorini-Coulomb conditions (Alart-Curnier; Hüeber-Stadler-Wohlmuth) — on the small dense
+// problem d = g₀ + (W + C) r. Once the statuses are right, one linear solve gives the exact
+// answer; if the active set cycles, projected Gauss-Seidel sweeps on the same condensed
+// problem (NSGS) move the iterate before the Newton steps resume.
+#include "core/solvers/condensed_interface.h"
+#include "core/solvers/solve_report.h"
+
+namespace thinlayer {
+
+SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& condensed,
+                       const SolverOptions& options = {});
+
+// Convenience: factor and condense, then solve (for one-off scenes).
+SolveReport solve_fast(const ContactProblem& problem, const SolverOptions& options = {});
+
+}  // namespace thinlayer

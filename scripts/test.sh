@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# The project's test command (README): dependencies, Release build, then every test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+ctest --test-dir build --output-on-failure -j "$(nproc)"

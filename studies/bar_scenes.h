@@ -1,0 +1,52 @@
+#pragma once
+// Limit-mode scenes of the bar (SPEC §2.1): one shared bulk per mesh, one scene per law.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cases/bar/bar.h"
+#include "core/fem/linear_system.h"
+#include "core/io/scene_record.h"
+#include "core/solvers/condensed_interface.h"
+#include "core/solvers/solve_report.h"
+
+namespace thinlayer {
+
+// Relative tolerance of the gap/slide/stick classification (SPEC §1.2), reported with results.
+constexpr double default_status_tolerance = 1e-6;
+
+// The bar's bulk for one mesh: model, assembled system, and (built on first use) the
+// factorisation condensed onto AD, shared by every law solved on this mesh.
+class BarBulk {
+ public:
+  explicit BarBulk(const bar::MeshOptions& mesh);
+  const bar::MeshOptions& mesh_options() const { return mesh_; }
+  const Model& model() const { return model_; }
+  const LinearSystem& system() const { return *system_; }
+  const CondensedInterface& condensed();
+
+ private:
+  bar::MeshOptions mesh_;
+  Model model_;
+  std::unique_ptr<LinearSystem> system_;
+  std::unique_ptr<CondensedInterface> condensed_;
+};
+
+enum class SolverKind { Fast, Relaxation };
+SolverKind parse_solver(const std::string& name);  // "fast" | "relaxation", else throws
+const char* to_string(SolverKind s);
+
+struct BarScene {
+  SceneRecord record;
+  SolveReport report;
+  StatusCount counts;
+};
+
+// Solves the bar in limit mode with `law` on AD; law_case is "table3-row-N" or the Table 1
+// letter. The record carries every attribute of SPEC §4.
+BarScene solve_bar(BarBulk& bulk, const InterfaceLaw& law, const std::string& law_case, SolverKind solver,
+                   const SolverOptions& options, double status_tolerance = default_status_tolerance);
+
+std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_case, double scale, SolverKind solver);
+
+}  // namespace thinlayer

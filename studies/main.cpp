@@ -1,0 +1,53 @@
+// thinlayer: verification and benchmark suite for thin adhesive layers in frictional contact
+// and their limit interface laws (Lebon & Zaittouni 2010).
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "studies/command_solve.h"
+#include "studies/command_study.h"
+
+namespace {
+
+const char* const main_help = R"(usage: thinlayer COMMAND [options]
+
+Commands:
+  solve      solve one scene                       (thinlayer solve --help)
+  study      run a study: table3                   (thinlayer study --help)
+  verify     run every study and check the results (thinlayer verify --help)
+
+Units: mm and daN (stresses in daN/mm^2 = 10 MPa; lambda_bar, mu_bar in daN/mm^3).
+)";
+
+bool wants_help(const std::vector<std::string>& args) {
+  for (const auto& a : args)
+    if (a == "--help" || a == "-h") return true;
+  return false;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::fputs(main_help, stdout);
+    return args.empty() ? 2 : 0;
+  }
+  const std::string command = args[0];
+  args.erase(args.begin());
+  if (command == "solve") {
+    if (wants_help(args)) return std::fputs(thinlayer::solve_help, stdout), 0;
+    return thinlayer::command_solve(args);
+  }
+  if (command == "study") {
+    if (wants_help(args)) return std::fputs(thinlayer::study_help, stdout), 0;
+    return thinlayer::command_study(args);
+  }
+  if (command == "verify") {
+    if (wants_help(args)) return std::fputs(thinlayer::verify_help, stdout), 0;
+    return thinlayer::command_verify(args);
+  }
+  std::cerr << "thinlayer: unknown command '" << command << "' (see thinlayer --help)\n";
+  return 2;
+}

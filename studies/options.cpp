@@ -1,0 +1,38 @@
+#include "studies/options.h"
+
+#include <stdexcept>
+
+namespace thinlayer {
+
+bar::MeshOptions parse_bar_mesh(const Args& args) {
+  bar::MeshOptions m;
+  m.nx = args.integer("nx", m.nx);
+  m.ny = args.integer("ny", m.ny);
+  if (m.nx < 1 || m.ny < 1) throw std::invalid_argument("--nx and --ny must be >= 1");
+  const std::string element = args.text("element", "Q1");
+  if (element == "Q1") m.element = ElementType::Q1;
+  else if (element == "P1") m.element = ElementType::P1;
+  else throw std::invalid_argument("unknown element '" + element + "' (expected Q1 or P1)");
+  const std::string diagonal = args.text("diagonal", "right");
+  if (diagonal == "right") m.diagonal = TriangleDiagonal::Right;
+  else if (diagonal == "left") m.diagonal = TriangleDiagonal::Left;
+  else throw std::invalid_argument("unknown diagonal '" + diagonal + "' (expected right or left)");
+  const std::string plane = args.text("plane", "strain");
+  if (plane == "strain") m.plane = PlaneHypothesis::Strain;
+  else if (plane == "stress") m.plane = PlaneHypothesis::Stress;
+  else throw std::invalid_argument("unknown plane hypothesis '" + plane + "' (expected strain or stress)");
+  return m;
+}
+
+SolverOptions parse_solver_options(const Args& args) {
+  SolverOptions o;
+  o.tolerance = args.number("tolerance", o.tolerance);
+  if (!(o.tolerance > 0) || std::isinf(o.tolerance)) throw std::invalid_argument("--tolerance must be finite and > 0");
+  o.max_iterations = args.integer("max-iterations", 0);
+  if (o.max_iterations < 0) throw std::invalid_argument("--max-iterations must be >= 0");
+  o.omega = args.number("omega", o.omega);
+  if (!(o.omega > 0 && o.omega < 2)) throw std::invalid_argument("--omega must be in (0, 2)");
+  return o;
+}
+
+}  // namespace thinlayer

@@ -1,0 +1,27 @@
+#pragma once
+// Command-line options shared by `solve` and the studies: the bar's mesh and the solvers.
+#include <set>
+#include <string>
+
+#include "cases/bar/bar.h"
+#include "core/solvers/solve_report.h"
+#include "studies/args.h"
+
+namespace thinlayer {
+
+#define MESH_AND_SOLVER_HELP \
+  "  --nx N, --ny N       elements along AD and DE (default 32 x 32)\n" \
+  "  --element E          Q1 (default) | P1\n" \
+  "  --diagonal D         P1 only: right (default, '/') | left ('\\')\n" \
+  "  --plane P            strain (default) | stress\n" \
+  "  --tolerance T        SPEC residual to reach (default 1e-10)\n" \
+  "  --max-iterations N   solver iteration cap (default: fast 200, relaxation 100000 sweeps)\n" \
+  "  --omega W            relaxation's over-relaxation coefficient in (0, 2) (default 1.8)\n"
+
+inline const std::set<std::string> mesh_and_solver_options = {"nx", "ny", "element", "diagonal", "plane",
+                                                              "tolerance", "max-iterations", "omega"};
+
+bar::MeshOptions parse_bar_mesh(const Args& args);
+SolverOptions parse_solver_options(const Args& args);
+
+}  // namespace thinlayer

@@ -1,0 +1,170 @@
+// The `thinlayer` command line: bad input gives a one-line error, a non-zero exit status and
+// no output file; a good solve writes every field of the SPEC §4 schema.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/io/h5_reader.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int status = 0;
+  std::string out, err;
+};
+
+CliRun run(const std::string& arguments) {
+  static int counter = 0;
+  const fs::path dir = fs::temp_directory_path();
+  const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  const fs::path out = dir / ("thinlayer-cli-out-" + tag), err = dir / ("thinlayer-cli-err-" + tag);
+  const std::string command = std::string(THINLAYER_CLI) + " " + arguments + " >" + out.string() + " 2>" + err.string();
+  const int raw = std::system(command.c_str());
+  auto slurp = [](const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+  };
+  CliRun r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+int lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+struct Cli : ::testing::Test {
+  fs::path dir = fs::temp_directory_path() / ("thinlayer-cli-" + std::to_string(::getpid()));
+  void SetUp() override { fs::create_directories(dir); }
+  void TearDown() override { fs::remove_all(dir); }
+  // Directory left empty: no output and no temporary file.
+  bool dir_empty() const { return fs::is_empty(dir); }
+};
+
+TEST_F(Cli, BadInputGivesOneLineErrorNonZeroExitAndNoFile) {
+  const std::string out = " --out " + (dir / "scene.h5").string();
+  const char* bad[] = {
+      "solve --case nosuchcase",
+      "solve --case bar --row 7",
+      "solve --case bar --row 0",
+      "solve --case bar --lambda-bar -1 --mu-bar 5",
+      "solve --case bar --lambda-bar nan --mu-bar 5",
+      "solve --case bar --lambda-bar 4 --mu-bar NaN",
+      "solve --case bar --row 1 --friction -0.5",
+      "solve --case bar --row 1 --friction nan",
+      "solve --case bar --row 1 --nx 0",
+      "solve --case bar --row 1 --element Q2",
+      "solve --case bar --row 1 --solver magic",
+      "solve --case bar --row 1 --bogus-option 3",
+      "solve --case bar",
+  };
+  for (const char* args : bad) {
+    SCOPED_TRACE(args);
+    const CliRun r = run(std::string(args) + out);
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("thinlayer solve: "), std::string::npos) << r.err;
+    EXPECT_TRUE(dir_empty());
+  }
+}
+
+TEST_F(Cli, UnwritableOutputIsAnErrorBeforeAnyWork) {
+  const CliRun r = run("solve --case bar --row 1 --out /nonexistent-dir/scene.h5");
+  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("/nonexistent-dir/scene.h5"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists("/nonexistent-dir"));
+}
+
+TEST_F(Cli, HelpIsAvailableForEveryCommand) {
+  for (const char* args : {"--help", "solve --help", "study --help", "verify --help"}) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.status, 0) << args;
+    EXPECT_NE(r.out.find("usage"), std::string::npos) << args;
+  }
+}
+
+TEST_F(Cli, SolveWritesEverySpecField) {
+  const fs::path file = dir / "row1.h5";
+  const CliRun r = run("solve --case bar --row 1 --out " + file.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  thinlayer::H5Reader h5(file.string());
+  const auto scenes = h5.children("/scenes");
+  ASSERT_EQ(scenes.size(), 1u);
+  const std::string g = "/scenes/" + scenes[0];
+  EXPECT_EQ(h5.attr_string(g, "case"), "bar");
+  EXPECT_EQ(h5.attr_string(g, "mode"), "limit");
+  EXPECT_EQ(h5.attr_string(g, "law_case"), "table3-row-1");
+  EXPECT_EQ(h5.attr_string(g, "plane"), "strain");
+  EXPECT_EQ(h5.attr_string(g, "element"), "Q1");
+  EXPECT_EQ(h5.attr_string(g, "solver"), "fast");
+  EXPECT_DOUBLE_EQ(h5.attr_double(g, "lambda_bar"), 4.5e8);
+  EXPECT_DOUBLE_EQ(h5.attr_double(g, "mu_bar"), 5.4e8);
+  EXPECT_DOUBLE_EQ(h5.attr_double(g, "friction"), 1.0);
+  for (const char* a : {"eps", "gamma", "delta", "residual", "wall_time_s"}) EXPECT_NO_THROW(h5.attr_double(g, a)) << a;
+  EXPECT_EQ(h5.attr_int(g, "converged"), 1);
+  EXPECT_GT(h5.attr_int(g, "iterations"), 0);
+  EXPECT_LE(h5.attr_double(g, "residual"), 1e-10);
+
+  std::vector<size_t> shape;
+  const auto nodes = h5.read_doubles(g + "/mesh/nodes", &shape);
+  ASSERT_EQ(shape, (std::vector<size_t>{33 * 33, 2}));
+  h5.read_ints(g + "/mesh/cells", &shape);
+  EXPECT_EQ(shape, (std::vector<size_t>{32 * 32, 4}));
+  const auto u = h5.read_doubles(g + "/u", &shape);
+  EXPECT_EQ(shape, (std::vector<size_t>{33 * 33, 2}));
+
+  const std::string s = g + "/interface/S";
+  const auto x = h5.read_doubles(s + "/x", &shape);
+  EXPECT_EQ(shape, (std::vector<size_t>{32, 2}));
+  h5.read_doubles(s + "/normal", &shape);
+  EXPECT_EQ(shape, (std::vector<size_t>{32, 2}));
+  const auto jump_N = h5.read_doubles(s + "/jump_N");
+  const auto jump_T = h5.read_doubles(s + "/jump_T");
+  const auto sigma_N = h5.read_doubles(s + "/sigma_N");
+  const auto sigma_T = h5.read_doubles(s + "/sigma_T");
+  const auto status = h5.read_ints(s + "/status");
+  ASSERT_EQ(jump_N.size(), 32u);
+  ASSERT_EQ(status.size(), 32u);
+  EXPECT_EQ(sigma_N.size(), 32u);
+  EXPECT_EQ(sigma_T.size(), 32u);
+  // SPEC §4: on the foundation jump_N = -u₂ and jump_T = u₁ at the node of AD at the same x.
+  for (size_t k = 0; k < 32; ++k) {
+    bool found = false;
+    for (size_t n = 0; n < nodes.size() / 2; ++n)
+      if (nodes[2 * n + 1] == 0.0 && nodes[2 * n] == x[2 * k]) {
+        EXPECT_DOUBLE_EQ(jump_N[k], -u[2 * n + 1]);
+        EXPECT_DOUBLE_EQ(jump_T[k], u[2 * n]);
+        found = true;
+      }
+    EXPECT_TRUE(found) << "interface node " << k;
+    EXPECT_GE(status[k], 0);
+    EXPECT_LE(status[k], 2);
+  }
+  for (const char* b : {"D", "DE"}) {
+    h5.read_doubles(g + "/reactions/" + b, &shape);
+    EXPECT_EQ(shape, (std::vector<size_t>{2})) << b;
+  }
+}
+
+TEST_F(Cli, RelaxationSolveReportsNonConvergenceWithExitStatus1) {
+  const fs::path file = dir / "capped.h5";
+  const CliRun r = run("solve --case bar --row 3 --solver relaxation --max-iterations 3 --out " + file.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("NOT converged"), std::string::npos) << r.err;
+  thinlayer::H5Reader h5(file.string());  // the result is written, marked as not converged
+  EXPECT_EQ(h5.attr_int("/scenes/" + h5.children("/scenes").at(0), "converged"), 0);
+}
+
+}  // namespace
