@@ -1,5 +1,6 @@
 #include "studies/bar_scenes.h"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -38,40 +39,100 @@ std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_ca
   return id.str();
 }
 
-BarScene solve_bar(BarBulk& bulk, const InterfaceLaw& law, const std::string& law_case, SolverKind solver,
-                   const SolverOptions& options, double status_tolerance) {
-  const ContactProblem problem(bulk.system(), {bar::make_interface(bulk.model(), law)});
-  BarScene scene;
-  double setup_time = 0;
-  if (solver == SolverKind::Fast) {
-    const CondensedInterface& condensed = bulk.condensed();
-    setup_time = condensed.setup_time_s();
-    scene.report = solve_fast(problem, condensed, options);
-  } else {
-    scene.report = solve_relaxation(problem, options);
-  }
-  const bar::MeshOptions& mesh = bulk.mesh_options();
-  SceneRecord& r = scene.record;
-  r = record_scene(bar_scene_id(mesh, law_case, 1.0, solver), bulk.model(), problem, scene.report, status_tolerance);
+SolveReport run_solver(const ContactProblem& problem, const CondensedInterface* condensed, SolverKind solver,
+                       const SolverOptions& options) {
+  if (solver == SolverKind::Relaxation) return solve_relaxation(problem, options);
+  if (condensed) return solve_fast(problem, *condensed, options);
+  return solve_fast(problem, options);
+}
+
+namespace {
+
+void add_bar_attributes(SceneRecord& r, const bar::MeshOptions& mesh, const std::string& mode,
+                        const std::string& law_case, double lambda_bar, double mu_bar, double eps) {
   r.text["case"] = "bar";
-  r.text["mode"] = "limit";
+  r.text["mode"] = mode;
   r.text["law_case"] = law_case;
-  r.text["table1_case"] = std::string(1, law.table1_case());
+  r.text["table1_case"] = std::string(1, InterfaceLaw::make(lambda_bar, mu_bar, bar::friction).table1_case());
   r.text["plane"] = to_string(mesh.plane);
   r.text["element"] = to_string(mesh.element);
   if (mesh.element == ElementType::P1)
     r.text["diagonal"] = mesh.diagonal == TriangleDiagonal::Right ? "right" : "left";
-  r.numbers["eps"] = 0.0;  // limit mode: the layer has shrunk to S
+  r.numbers["eps"] = eps;  // 0 in limit mode: the layer has shrunk to S
   // The bar's layer has λ_ε = ε λ̄, μ_ε = ε μ̄ (SPEC §2.1): exponents γ = δ = 1.
   r.numbers["gamma"] = 1.0;
   r.numbers["delta"] = 1.0;
-  r.numbers["lambda_bar"] = law.lambda_bar;
-  r.numbers["mu_bar"] = law.mu_bar;
-  r.numbers["friction"] = law.friction;
-  r.numbers["setup_time_s"] = setup_time;
+  r.numbers["lambda_bar"] = lambda_bar;
+  r.numbers["mu_bar"] = mu_bar;
+  r.numbers["friction"] = bar::friction;
   r.integers["nx"] = mesh.nx;
   r.integers["ny"] = mesh.ny;
+}
+
+}  // namespace
+
+std::vector<int> combined_statuses(const InterfaceFields& plus_face, const InterfaceFields& minus_face) {
+  // Node k of both faces is node k of S; a face may extend beyond S (the bar's S- under D).
+  const size_t n = std::min(plus_face.status.size(), minus_face.status.size());
+  std::vector<int> combined;
+  for (size_t k = 0; k < n; ++k)
+    combined.push_back(static_cast<int>(combined_status(static_cast<NodeStatus>(plus_face.status[k]),
+                                                        static_cast<NodeStatus>(minus_face.status[k]))));
+  return combined;
+}
+
+BarScene solve_bar(BarBulk& bulk, const InterfaceLaw& law, const std::string& law_case, SolverKind solver,
+                   const SolverOptions& options, double status_tolerance) {
+  const ContactProblem problem(bulk.system(), {bar::make_interface(bulk.model(), law)});
+  BarScene scene;
+  const CondensedInterface* condensed = solver == SolverKind::Fast ? &bulk.condensed() : nullptr;
+  scene.report = run_solver(problem, condensed, solver, options);
+  const bar::MeshOptions& mesh = bulk.mesh_options();
+  SceneRecord& r = scene.record;
+  r = record_scene(bar_scene_id(mesh, law_case, 1.0, solver), bulk.model(), problem, scene.report, status_tolerance);
+  add_bar_attributes(r, mesh, "limit", law_case, law.lambda_bar, law.mu_bar, 0.0);
+  r.numbers["friction"] = law.friction;
+  r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   scene.counts = r.interfaces.at(0).counts();
+  return scene;
+}
+
+BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, double mu_bar, double eps,
+                              const std::string& law_case, SolverKind solver, const SolverOptions& options,
+                              double status_tolerance) {
+  if (!(eps > 0) || !std::isfinite(eps)) throw std::invalid_argument("eps must be finite and > 0");
+  const InterfaceLaw law = InterfaceLaw::make(lambda_bar, mu_bar, bar::friction);  // validates
+  if (!std::isfinite(lambda_bar) || !std::isfinite(mu_bar) || !(mu_bar > 0))
+    throw std::invalid_argument("layer mode needs finite lambda_bar >= 0 and mu_bar > 0 (the layer's Lamé "
+                                "coefficients are eps times them)");
+  bar::LayerOptions layer;
+  layer.eps = eps;
+  layer.lambda_eps = eps * law.lambda_bar;
+  layer.mu_eps = eps * law.mu_bar;
+  const Model model = bar::make_layer_model(mesh, layer);
+  const LinearSystem system(model);
+  const ContactProblem problem(system, bar::make_layer_interfaces(model));
+  std::unique_ptr<CondensedInterface> condensed;
+  if (solver == SolverKind::Fast) condensed = std::make_unique<CondensedInterface>(problem);
+  BarLayerScene scene;
+  scene.report = run_solver(problem, condensed.get(), solver, options);
+  std::ostringstream id;
+  id << bar_scene_id(mesh, law_case, 1.0, solver) << "-layer-eps" << eps;
+  SceneRecord& r = scene.record;
+  r = record_scene(id.str(), model, problem, scene.report, status_tolerance);
+  add_bar_attributes(r, mesh, "layer", law_case, lambda_bar, mu_bar, eps);
+  r.numbers["lambda_eps"] = layer.lambda_eps;
+  r.numbers["mu_eps"] = layer.mu_eps;
+  r.integers["layer_elements"] = layer.layer_elements;
+  r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
+  const InterfaceFields& plus = r.interfaces.at(0);
+  const InterfaceFields& minus = r.interfaces.at(1);
+  scene.plus_face = plus.counts();
+  scene.minus_face = minus.counts();
+  r.combined_status = combined_statuses(plus, minus);
+  std::vector<NodeStatus> combined;
+  for (int v : r.combined_status) combined.push_back(static_cast<NodeStatus>(v));
+  scene.combined = count_statuses(combined);
   return scene;
 }
 

@@ -49,4 +49,23 @@ BarScene solve_bar(BarBulk& bulk, const InterfaceLaw& law, const std::string& la
 
 std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_case, double scale, SolverKind solver);
 
+// Thin-layer mode (SPEC §2.1): the layer under AD with λ_ε = eps λ̄, μ_ε = eps μ̄ and
+// Signorini-Coulomb on both faces. Counts per face and combined (gap if either face is open,
+// else slide if either slides, else stick).
+struct BarLayerScene {
+  SceneRecord record;
+  SolveReport report;
+  StatusCount plus_face, minus_face, combined;
+};
+BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, double mu_bar, double eps,
+                              const std::string& law_case, SolverKind solver, const SolverOptions& options,
+                              double status_tolerance = default_status_tolerance);
+
+// Runs the chosen solver; the fast one reuses `condensed` when given.
+SolveReport run_solver(const ContactProblem& problem, const CondensedInterface* condensed, SolverKind solver,
+                       const SolverOptions& options);
+
+// Combined statuses of two faces' fields, node by node (SPEC §2.2).
+std::vector<int> combined_statuses(const InterfaceFields& plus_face, const InterfaceFields& minus_face);
+
 }  // namespace thinlayer

@@ -150,8 +150,8 @@ class PatchTest : public testing::TestWithParam<std::tuple<MeshKind, PlaneHypoth
 TEST_P(PatchTest, DistortedMeshIsValidAndReallyDistorted) {
   const Mesh mesh = distorted_mesh(kind());
   const double hx = 3.0 / 7, hy = 2.0 / 5;
-  // Convex cells (bound derived above; triangles are halves of convex quads, whose corner
-  // cross products are twice their area, at least the smaller of the two quad corners).
+  // Convex, counter-clockwise cells (bound derived above distorted_mesh; a triangle's corner
+  // cross products are twice its area).
   EXPECT_GT(min_corner_cross(mesh), 0.0);
   // The perturbation is not negligible: some interior node is off the grid by > 0.1 h.
   double largest_offset = 0;

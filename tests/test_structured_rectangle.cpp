@@ -298,7 +298,13 @@ INSTANTIATE_TEST_SUITE_P(
                     spec_of(ElementType::P1, TriangleDiagonal::Left),
                     with_element(far_from_origin(), ElementType::Q1, TriangleDiagonal::Right),
                     with_element(far_from_origin(), ElementType::P1, TriangleDiagonal::Left),
-                    with_element(RectangleMeshSpec{}, ElementType::P1, TriangleDiagonal::Right)));
+                    with_element(RectangleMeshSpec{}, ElementType::P1, TriangleDiagonal::Right)),
+    [](const testing::TestParamInfo<RectangleMeshSpec>& info) {
+      const RectangleMeshSpec& s = info.param;
+      std::string name = std::to_string(info.index) + "_" + to_string(s.element);
+      if (s.element == ElementType::P1) name += s.diagonal == TriangleDiagonal::Right ? "_right" : "_left";
+      return name + "_" + std::to_string(s.nx) + "x" + std::to_string(s.ny);
+    });
 
 // mesh_from_gmsh on what the dovetail will need: slanted curves, several bodies, a surface
 // whose cells gmsh orients clockwise.

@@ -1,6 +1,9 @@
 #include "cases/bar/bar.h"
 
+#include <limits>
 #include <stdexcept>
+
+#include "core/mesh/layer_band.h"
 
 namespace thinlayer::bar {
 
@@ -32,6 +35,41 @@ Interface make_interface(const Model& model, const InterfaceLaw& law) {
     throw std::logic_error("bar: node set 'bottom' must end at D");
   contact_nodes.pop_back();  // D is pinned; its reaction is reported separately
   return foundation_interface("S", law, model, 0, contact_nodes, mesh.edge_set("bottom"));
+}
+
+Model make_layer_model(const MeshOptions& mesh, const LayerOptions& layer) {
+  if (!(layer.eps > 0) || !std::isfinite(layer.eps)) throw std::invalid_argument("eps must be finite and > 0");
+  Model model = make_model(mesh);
+  const Mesh& bar = model.bodies[0].mesh;
+  // The layer's faces: its top face matches AD node for node, its bottom face lies eps below.
+  const std::vector<int>& ad = bar.node_set("bottom");
+  Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> top(ad.size(), 2), bottom(ad.size(), 2);
+  for (size_t i = 0; i < ad.size(); ++i) {
+    top.row(i) = bar.nodes.row(ad[i]);
+    bottom.row(i) << bar.nodes(ad[i], 0), -layer.eps;
+  }
+  Body body{"layer", layer_band(bottom, top, layer.layer_elements),
+            Material{layer.lambda_eps, layer.mu_eps, mesh.plane}, true};
+  model.bodies.push_back(std::move(body));
+  return model;
+}
+
+std::vector<Interface> make_layer_interfaces(const Model& model) {
+  const InterfaceLaw signorini_coulomb = InterfaceLaw::make(std::numeric_limits<double>::infinity(),
+                                                            std::numeric_limits<double>::infinity(), friction);
+  const Mesh& bar = model.bodies.at(0).mesh;
+  const Mesh& layer = model.bodies.at(1).mesh;
+  std::vector<int> bar_nodes = bar.node_set("bottom");
+  std::vector<int> top = layer.node_set("S+"), bottom = layer.node_set("S-");
+  // D is pinned and not a contact node (SPEC §2.1.1), so the layer's top face skips the node
+  // under D; its bottom face rests on the foundation everywhere, the node under D included
+  // (without it the layer's end would hang by the layer's in-plane stiffness alone).
+  bar_nodes.pop_back();
+  top.pop_back();
+  Interface upper = paired_interface("S+", signorini_coulomb, model, 0, bar_nodes, bar.edge_set("bottom"), 1, top,
+                                     1e-9 * side);
+  Interface lower = foundation_interface("S-", signorini_coulomb, model, 1, bottom, layer.edge_set("S-"));
+  return {upper, lower};
 }
 
 }  // namespace thinlayer::bar

@@ -32,4 +32,21 @@ Model make_model(const MeshOptions& options = {});
 // The limit-mode interface "S" on AD (without D), carrying the given law.
 Interface make_interface(const Model& model, const InterfaceLaw& law);
 
+// Thin-layer mode (SPEC §2.1): body 1 is a floating layer of thickness eps (mm) under AD,
+// [0, L] × [-eps, 0], `layer_elements` Q1 elements through its thickness, with Lamé
+// coefficients λ_ε = eps·λ̄, μ_ε = eps·μ̄ (daN/mm²), on the rigid foundation moved down by eps.
+struct LayerOptions {
+  double eps = 1e-4;        // mm
+  double lambda_eps = 0;    // daN/mm²
+  double mu_eps = 0;        // daN/mm²
+  int layer_elements = 2;
+};
+Model make_layer_model(const MeshOptions& mesh, const LayerOptions& layer);
+
+// The two interfaces of the layer, both Signorini-Coulomb with f = 1: "S+" between the bar
+// (plus) and the layer's top face, without the node under D (32 nodes: node k is node k of
+// the limit mode's S); "S-" between the layer (plus) and the foundation, all 33 nodes (the
+// last one under D).
+std::vector<Interface> make_layer_interfaces(const Model& model);
+
 }  // namespace thinlayer::bar

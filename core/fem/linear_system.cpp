@@ -77,8 +77,12 @@ LinearSystem::LinearSystem(const Model& model)
   }
   free_index_.assign(n, -1);
   int num_free = 0;
-  for (int dof = 0; dof < n; ++dof)
-    if (owner_[dof].empty()) free_index_[dof] = num_free++;
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b)
+    for (int dof = model.dof_offset(b); dof < model.dof_offset(b + 1); ++dof)
+      if (owner_[dof].empty()) {
+        free_index_[dof] = num_free++;
+        floating_free_.push_back(model.bodies[b].floating);
+      }
 
   Triplets ff;
   F_f_ = Eigen::VectorXd::Zero(num_free);

@@ -26,6 +26,8 @@ class LinearSystem {
   // Free index of a global DOF, or -1 when the DOF is prescribed.
   int free_index(int global_dof) const { return free_index_[global_dof]; }
   double prescribed_value(int global_dof) const { return prescribed_[global_dof]; }
+  // Whether a free DOF belongs to a floating body (Body::floating).
+  bool floating(int free_dof) const { return floating_free_[free_dof]; }
 
   // Full nodal displacement vector from the free unknowns (prescribed values filled in).
   Eigen::VectorXd expand(const Eigen::VectorXd& u_free) const;
@@ -43,6 +45,7 @@ class LinearSystem {
   std::vector<int> free_index_;
   std::vector<double> prescribed_;
   std::vector<std::string> owner_;  // name of the condition prescribing each DOF ("" if free)
+  std::vector<bool> floating_free_;
   SparseMatrix K_ff_;
   Eigen::VectorXd F_f_;
 };

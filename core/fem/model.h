@@ -16,6 +16,9 @@ struct Body {
   std::string name;
   Mesh mesh;
   Material material;
+  // A floating body has no support of its own: only its interfaces hold it (the thin layer).
+  // Its stiffness is singular, so the solvers condense it separately and never factor it.
+  bool floating = false;
 };
 
 // u_component = value on the listed nodes of one body. The name groups the reaction it

@@ -1,5 +1,6 @@
 #include "core/io/csv_table.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -17,6 +18,9 @@ std::vector<std::string> split(const std::string& line) {
     const auto last = field.find_last_not_of(" \t\r");
     fields.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
   }
+  // getline yields no field after a trailing comma, but "a,b," has three fields.
+  const auto end = line.find_last_not_of(" \t\r");
+  if (end != std::string::npos && line[end] == ',') fields.push_back("");
   return fields;
 }
 
@@ -64,14 +68,14 @@ double CsvTable::number(int row, const std::string& column) const {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != s.size() || s.empty())
+  if (used != s.size() || s.empty() || !std::isfinite(value))
     throw std::runtime_error(path_ + ": column '" + column + "' row " + std::to_string(row + 1) + ": not a number: '" + s + "'");
   return value;
 }
 
 int CsvTable::integer(int row, const std::string& column) const {
   const double v = number(row, column);
-  if (v != static_cast<int>(v))
+  if (std::abs(v) > 1e9 || v != std::floor(v))
     throw std::runtime_error(path_ + ": column '" + column + "' row " + std::to_string(row + 1) + ": not an integer");
   return static_cast<int>(v);
 }

@@ -111,6 +111,7 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
     file.dataset(p + "/status", f.status);
   }
   for (const auto& [name, R] : scene.reactions) file.dataset(g + "/reactions/" + name, std::vector<double>{R.x(), R.y()});
+  if (!scene.combined_status.empty()) file.dataset(g + "/combined_status", scene.combined_status);
 }
 
 }  // namespace thinlayer

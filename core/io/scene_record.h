@@ -34,6 +34,8 @@ struct SceneRecord {
   H5Writer::RowMatrixXd u;                        // N×2, mm
   std::vector<InterfaceFields> interfaces;
   std::map<std::string, Eigen::Vector2d> reactions;  // daN per unit thickness
+  // Layer mode: the status of each point of S through both faces (empty in limit mode).
+  std::vector<int> combined_status;
 };
 
 // Interface fields of a solution: jumps g = B u + g_D, stresses σ = r / ℓ, statuses with the

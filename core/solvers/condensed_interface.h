@@ -1,10 +1,14 @@
 #pragma once
-// The bulk condensed onto the interface: factor K once (CHOLMOD), then
-//   W = B K⁻¹ Bᵀ   (the Delassus operator, mm/daN)   and   g₀ = B K⁻¹ F + g_D  (mm),
-// so that the jumps are g = g₀ + W r for any interface forces r. Everything here depends on
-// the mesh, the materials, the supports and the loads, never on the interface law: every
-// scene that shares them (all Table 3 rows, all limit-mode law cases) shares one of these.
+// The bulk condensed onto the interface. The supported bodies are factored once (CHOLMOD):
+//   W = B_A K_AA⁻¹ B_Aᵀ   (the Delassus operator, mm/daN),   g₀ = B_A K_AA⁻¹ F_A + g_D  (mm).
+// A floating body (the thin layer, Body::floating) is never factored whole — its stiffness is
+// singular when its contacts open. Its interior is condensed onto its interface DOFs w:
+//   S w = f_L + B_Lᵀ r,   S = K_ff - K_fi K_ii⁻¹ K_if,   f_L = F_f - K_fi K_ii⁻¹ F_i,
+// and the solver keeps w as unknowns. The jumps are then g = g₀ + W r + B_L w.
+// Nothing here depends on the interface law: every scene that shares the mesh, materials,
+// supports and loads (all Table 3 rows, all limit-mode law cases) shares one of these.
 #include <memory>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -19,14 +23,23 @@ class CondensedInterface {
 
   const Eigen::MatrixXd& W() const { return W_; }
   const Eigen::VectorXd& g0() const { return g0_; }
-  // Bulk displacement for given interface forces: u = K⁻¹ (F + Bᵀ r).
-  Eigen::VectorXd displacement(const ContactProblem& problem, const Eigen::VectorXd& r) const;
-  double setup_time_s() const { return setup_time_s_; }  // factorisation + condensation
+  // Floating bodies (empty when there are none).
+  int num_floating_unknowns() const { return static_cast<int>(S_.rows()); }
+  const Eigen::MatrixXd& B_L() const { return B_L_; }  // 2m × |w|
+  const Eigen::MatrixXd& S() const { return S_; }      // |w| × |w|, daN/mm, singular if it floats
+  const Eigen::VectorXd& f_L() const { return f_L_; }
+
+  // Bulk displacement (free DOFs) for interface forces r and floating-body interface DOFs w.
+  Eigen::VectorXd displacement(const ContactProblem& problem, const Eigen::VectorXd& r,
+                               const Eigen::VectorXd& w) const;
+  double setup_time_s() const { return setup_time_s_; }  // factorisations + condensation
 
  private:
-  std::shared_ptr<SparseCholesky> factor_;
-  Eigen::MatrixXd W_;
-  Eigen::VectorXd g0_;
+  std::vector<int> supported_, floating_face_, floating_interior_;  // free DOF indices
+  std::shared_ptr<SparseCholesky> factor_supported_, factor_interior_;
+  Eigen::SparseMatrix<double> K_if_;
+  Eigen::MatrixXd W_, B_L_, S_;
+  Eigen::VectorXd g0_, f_L_;
   double setup_time_s_ = 0;
 };
 

@@ -118,6 +118,12 @@ std::vector<NodeStatus> classify_statuses(const std::vector<InterfaceLaw>& laws,
   return status;
 }
 
+NodeStatus combined_status(NodeStatus plus_face, NodeStatus minus_face) {
+  if (plus_face == NodeStatus::Gap || minus_face == NodeStatus::Gap) return NodeStatus::Gap;
+  if (plus_face == NodeStatus::Slide || minus_face == NodeStatus::Slide) return NodeStatus::Slide;
+  return NodeStatus::Stick;
+}
+
 StatusCount count_statuses(const std::vector<NodeStatus>& statuses) {
   StatusCount c;
   for (NodeStatus s : statuses) {

@@ -76,4 +76,8 @@ std::vector<NodeStatus> classify_statuses(const std::vector<InterfaceLaw>& laws,
                                           const Eigen::VectorXd& sigma_T, double tolerance);
 StatusCount count_statuses(const std::vector<NodeStatus>& statuses);
 
+// The status of a point of S seen through the two faces of the layer (SPEC §2.2): gap if
+// either face is open, else slide if either face slides, else stick.
+NodeStatus combined_status(NodeStatus plus_face, NodeStatus minus_face);
+
 }  // namespace thinlayer

@@ -15,16 +15,18 @@ namespace {
 enum class Active : int { Gap, Stick, SlidePositive, SlideNegative, Frictionless };
 
 struct Condensed {
-  Eigen::MatrixXd W;        // W + C on the rows that carry a force; identity elsewhere
+  Eigen::MatrixXd W;        // W + C
   Eigen::VectorXd g0;
-  Eigen::VectorXd kappa;    // 1 / diag(W + C): the local stiffness of each row
+  Eigen::MatrixXd B_L, S;   // floating bodies: d also has B_L w, and S w = f_L + B_Lᵀ r
+  Eigen::VectorXd f_L;
+  Eigen::VectorXd kappa;    // the local stiffness of each row, as in the SPEC residual
   std::vector<bool> normal, tangential;  // does the row carry a force at all
   std::vector<double> friction;
 };
 
 Condensed condense(const ContactProblem& problem, const CondensedInterface& ci) {
   const int m = problem.num_nodes();
-  Condensed c{ci.W(), ci.g0(), Eigen::VectorXd::Zero(2 * m), {}, {}, {}};
+  Condensed c{ci.W(), ci.g0(), ci.B_L(), ci.S(), ci.f_L(), Eigen::VectorXd::Zero(2 * m), {}, {}, {}};
   for (int k = 0; k < m; ++k) {
     const InterfaceLaw& law = problem.law(k);
     c.normal.push_back(law.normal_active());
@@ -33,7 +35,9 @@ Condensed condense(const ContactProblem& problem, const CondensedInterface& ci) 
     for (int row = 0; row < 2; ++row) {
       const double C = problem.compliance()[2 * k + row];
       if (std::isfinite(C)) c.W(2 * k + row, 2 * k + row) += C;
-      c.kappa[2 * k + row] = 1.0 / c.W(2 * k + row, 2 * k + row);
+      // Not 1/diag(W + C): on a face of a floating body W can be zero (the layer on the bar's
+      // foundation); the nodal stiffness of both sides is what the residual uses anyway.
+      c.kappa[2 * k + row] = problem.kappa()[2 * k + row];
     }
   }
   return c;
@@ -58,11 +62,53 @@ std::vector<Active> guess_statuses(const Condensed& c, const Eigen::VectorXd& r,
   return s;
 }
 
-// One Newton step: the linear system that the guessed statuses make of the law.
-Eigen::VectorXd solve_statuses(const Condensed& c, const std::vector<Active>& s) {
-  const int n = static_cast<int>(c.g0.size());
+// Solves A x = b for a matrix that mixes compliances (mm/daN), stiffnesses (daN/mm) and
+// plain coefficients, whose scales can differ by 1e15 in the layer mode: equilibrate rows and
+// columns (a few Ruiz sweeps), factor once, then refine the solution against the original A.
+Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
+  const Eigen::Index n = A.rows();
+  Eigen::VectorXd row = Eigen::VectorXd::Ones(n), col = Eigen::VectorXd::Ones(n);
+  Eigen::MatrixXd M = A;
+  for (int sweep = 0; sweep < 5; ++sweep) {
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double r = M.row(i).cwiseAbs().maxCoeff(), c = M.col(i).cwiseAbs().maxCoeff();
+      if (r > 0) row[i] /= std::sqrt(r);
+      if (c > 0) col[i] /= std::sqrt(c);
+    }
+    M = row.asDiagonal() * A * col.asDiagonal();
+  }
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
+  Eigen::VectorXd x = col.asDiagonal() * lu.solve(row.asDiagonal() * b);
+  for (int refinement = 0; refinement < 3; ++refinement)
+    x += col.asDiagonal() * lu.solve(row.asDiagonal() * (b - A * x));
+  return x;
+}
+
+int floating_unknowns(const Condensed& c) { return static_cast<int>(c.S.rows()); }
+
+// d = g₀ + (W + C) r + B_L w.
+Eigen::VectorXd jump_part(const Condensed& c, const Eigen::VectorXd& r, const Eigen::VectorXd& w) {
+  Eigen::VectorXd d = c.g0 + c.W * r;
+  if (floating_unknowns(c)) d += c.B_L * w;
+  return d;
+}
+
+// One Newton step: the linear system that the guessed statuses make of the law, for the
+// interface forces r and, after them, the floating bodies' interface DOFs w.
+struct Step {
+  Eigen::VectorXd r, w;
+  bool singular = false;  // a floating body left undetermined: minimum-norm w taken
+};
+
+Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
+  const int m2 = static_cast<int>(c.g0.size()), nw = floating_unknowns(c), n = m2 + nw;
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  if (nw) {  // S w - B_Lᵀ r = f_L
+    A.bottomLeftCorner(nw, m2) = -c.B_L.transpose();
+    A.bottomRightCorner(nw, nw) = c.S;
+    b.tail(nw) = c.f_L;
+  }
   for (int k = 0; k < static_cast<int>(s.size()); ++k) {
     const int N = 2 * k, T = 2 * k + 1;
     if (s[k] == Active::Gap) {  // r = 0
@@ -70,11 +116,13 @@ Eigen::VectorXd solve_statuses(const Condensed& c, const std::vector<Active>& s)
       A(T, T) = 1;
       continue;
     }
-    A.row(N) = c.W.row(N);  // d_N = 0
+    A.row(N).head(m2) = c.W.row(N);  // d_N = 0
+    if (nw) A.row(N).tail(nw) = c.B_L.row(N);
     b[N] = -c.g0[N];
     switch (s[k]) {
       case Active::Stick:  // d_T = 0
-        A.row(T) = c.W.row(T);
+        A.row(T).head(m2) = c.W.row(T);
+        if (nw) A.row(T).tail(nw) = c.B_L.row(T);
         b[T] = -c.g0[T];
         break;
       case Active::SlidePositive:  // r_T = +f p = -f r_N
@@ -87,7 +135,18 @@ Eigen::VectorXd solve_statuses(const Condensed& c, const std::vector<Active>& s)
         break;
     }
   }
-  return A.partialPivLu().solve(b);
+  Step step;
+  Eigen::VectorXd x = solve_equilibrated(A, b);
+  // A floating body whose contacts are all open (or only slide) has rigid motions the step
+  // cannot fix: the system is singular. Then take the minimum-norm solution and say so.
+  const double scale = std::max(b.norm(), 1e-300);
+  if (!x.allFinite() || (A * x - b).norm() > 1e-8 * scale) {
+    x = A.completeOrthogonalDecomposition().solve(b);
+    step.singular = true;
+  }
+  step.r = x.head(m2);
+  step.w = x.tail(nw);
+  return step;
 }
 
 // Relative norm of the natural map on the condensed problem (same map as contact_residual).
@@ -131,6 +190,58 @@ void nsgs_sweeps(const Condensed& c, Eigen::VectorXd& r, int sweeps) {
 
 }  // namespace
 
+namespace {
+
+struct ActiveSetRun {
+  int iterations = 0, nsgs_sweeps = 0;
+  bool settled = false;   // the statuses reproduced themselves
+  bool singular = false;  // the last step had to take a minimum-norm solution
+};
+
+// Semismooth Newton / primal-dual active set from the given statuses and iterate.
+ActiveSetRun active_set(const Condensed& c, const ContactProblem& problem, std::vector<Active>& statuses,
+                        Eigen::VectorXd& r, Eigen::VectorXd& w, int max_iterations) {
+  ActiveSetRun run;
+  std::set<std::vector<Active>> visited;
+  const bool damped = floating_unknowns(c) > 0;
+  for (run.iterations = 1; run.iterations <= max_iterations; ++run.iterations) {
+    const Step step = solve_statuses(c, statuses);
+    run.singular = step.singular;
+    if (damped && run.iterations > 1) {
+      // Globalise the Newton step with a backtracking line search on the natural map.
+      const double merit0 = condensed_residual(c, problem, r, jump_part(c, r, w));
+      double t = 1;
+      for (; t > 1e-4; t *= 0.5) {
+        const Eigen::VectorXd rt = r + t * (step.r - r), wt = w + t * (step.w - w);
+        if (condensed_residual(c, problem, rt, jump_part(c, rt, wt)) < (1 - 1e-4 * t) * merit0) break;
+      }
+      r += t * (step.r - r);
+      w += t * (step.w - w);
+    } else {
+      r = step.r;
+      w = step.w;
+    }
+    std::vector<Active> next = guess_statuses(c, r, jump_part(c, r, w));
+    if (next == statuses) {  // a fixed point: re-solving the same statuses changes nothing
+      run.settled = true;
+      break;
+    }
+    // The active set cycles: let NSGS move the iterate (bodies with supports only).
+    if (!visited.insert(next).second && floating_unknowns(c) == 0) {
+      nsgs_sweeps(c, r, 20);
+      run.nsgs_sweeps += 20;
+      next = guess_statuses(c, r, jump_part(c, r, w));
+      visited.clear();
+    }
+    statuses = std::move(next);
+  }
+  run.iterations = std::min(run.iterations, max_iterations);
+  (void)problem;
+  return run;
+}
+
+}  // namespace
+
 SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& condensed,
                        const SolverOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -139,38 +250,55 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
   report.tolerance = options.tolerance;
   const int max_iterations = options.max_iterations > 0 ? options.max_iterations : 200;
   const Condensed c = condense(problem, condensed);
+  const int nw = floating_unknowns(c);
 
   Eigen::VectorXd r = Eigen::VectorXd::Zero(c.g0.size());
-  Eigen::VectorXd d = c.g0;
-  std::set<std::vector<Active>> visited;
-  int nsgs_total = 0;
-  std::vector<Active> statuses = guess_statuses(c, r, d);
-  for (report.iterations = 1; report.iterations <= max_iterations; ++report.iterations) {
-    r = solve_statuses(c, statuses);
-    d = c.g0 + c.W * r;
-    std::vector<Active> next = guess_statuses(c, r, d);
-    // A fixed point of the active-set map is the exact solution of the law; the residual
-    // check guards against accepting one that is not (it never happened in our cases).
-    if (next == statuses && condensed_residual(c, problem, r, d) <= 0.1 * options.tolerance) break;
-    if (!visited.insert(next).second) {  // the active set cycles: let NSGS move the iterate
-      nsgs_sweeps(c, r, 20);
-      nsgs_total += 20;
-      d = c.g0 + c.W * r;
-      next = guess_statuses(c, r, d);
-      visited.clear();
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(nw);
+  std::vector<Active> statuses = guess_statuses(c, r, c.g0);
+  ActiveSetRun run;
+  int proximal_steps = 0;
+  if (nw == 0) {
+    run = active_set(c, problem, statuses, r, w, max_iterations);
+    report.iterations = run.iterations;
+  } else {
+    // A floating body: its interface DOFs may be undetermined (the layer between two open
+    // faces, or sliding on both), which makes the Newton steps singular and erratic. Proximal
+    // point iterations make every step well posed — S + αP, with P = diag(S), pulls w towards
+    // the previous w — and leave the answer unchanged: at convergence w equals the previous w
+    // and the pull vanishes. Convergence is judged on the true (unregularised) residual.
+    // α starts at options.proximal_weight and shrinks tenfold each time the statuses settle,
+    // so that once the active set is right the steps become plain Newton steps.
+    Condensed proximal = c;
+    const Eigen::VectorXd P = c.S.diagonal().cwiseAbs().cwiseMax(1e-300);
+    double alpha = options.proximal_weight;
+    for (proximal_steps = 1; report.iterations < max_iterations; ++proximal_steps) {
+      proximal.S = c.S;
+      proximal.S.diagonal() += alpha * P;
+      proximal.f_L = c.f_L + alpha * P.cwiseProduct(w);
+      const ActiveSetRun step = active_set(proximal, problem, statuses, r, w, max_iterations - report.iterations);
+      report.iterations += step.iterations;
+      run.nsgs_sweeps += step.nsgs_sweeps;
+      run.settled = step.settled;
+      run.singular = step.singular;
+      const Eigen::VectorXd u = condensed.displacement(problem, r, w);
+      if (contact_residual(problem, u, r).value() <= options.tolerance) break;
+      if (step.settled) alpha = std::max(alpha * 0.1, 1e-14);
     }
-    statuses = std::move(next);
   }
-  report.iterations = std::min(report.iterations, max_iterations);
 
   report.r = r;
-  report.u = condensed.displacement(problem, r);
+  report.u = condensed.displacement(problem, r, w);
   report.residual = contact_residual(problem, report.u, report.r);
   report.converged = report.residual.value() <= options.tolerance;
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream msg;
-  msg << (report.converged ? "converged" : "NOT converged") << " after " << report.iterations
-      << " active-set steps" << (nsgs_total ? " and " + std::to_string(nsgs_total) + " NSGS sweeps" : "")
+  msg << (report.converged ? "converged" : "NOT converged") << " after " << report.iterations << " active-set steps"
+      << (proximal_steps ? " in " + std::to_string(proximal_steps) + " proximal steps" : "")
+      << (run.nsgs_sweeps ? " and " + std::to_string(run.nsgs_sweeps) + " NSGS sweeps" : "")
+      << (run.singular ? " (a floating body is not held by its contacts: minimum-norm position taken)" : "")
+      << (!report.converged && run.settled && !proximal_steps
+              ? " (statuses settled but the linear solve lost accuracy: ill-conditioned system)"
+              : "")
       << ", residual " << report.residual.value() << " (tolerance " << options.tolerance << ")";
   report.message = msg.str();
   return report;

@@ -26,6 +26,7 @@ struct SolverOptions {
   double omega = 1.8;           // relaxation only: over-relaxation coefficient ω
   int sweeps_per_rho_update = 10;  // relaxation only: sweeps between friction-threshold updates
   bool verbose = false;         // progress lines on stderr
+  double proximal_weight = 1e-2;   // fast only, floating bodies: α of the proximal steps (see fast_solver.cpp)
 };
 
 }  // namespace thinlayer

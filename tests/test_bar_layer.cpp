@@ -1,0 +1,38 @@
+// The bar's thin-layer mode (SPEC §2.1): a floating layer under AD held only by
+// Signorini-Coulomb contact on both faces. Work in progress for the thin-layer issue: these
+// tests pin down what already works.
+#include <gtest/gtest.h>
+
+#include "core/io/reference_tables.h"
+#include "studies/bar_scenes.h"
+
+namespace thinlayer {
+namespace {
+
+// At ε = 1e-4 the layer with λ_ε = ε λ̄, μ_ε = ε μ̄ must behave like the limit law: same
+// combined gap/slide/stick counts as the limit mode's baseline (rows that converge today).
+TEST(BarLayer, ThinLayerReproducesTheLimitCounts) {
+  const auto paper = load_table3_paper();
+  const auto baseline = load_table3_baseline();
+  for (int row : {1, 2, 4, 5, 6}) {
+    SCOPED_TRACE("row " + std::to_string(row));
+    const BarLayerScene s = solve_bar_layer(bar::MeshOptions{}, paper[row - 1].lambda_bar, paper[row - 1].mu_bar, 1e-4,
+                                            "table3-row-" + std::to_string(row), SolverKind::Fast, SolverOptions{});
+    ASSERT_TRUE(s.report.converged) << s.report.message;
+    EXPECT_EQ((StatusCounts{s.combined.gap, s.combined.slide, s.combined.stick}), baseline[row - 1]);
+    // The record has both faces and the combined statuses.
+    ASSERT_EQ(s.record.interfaces.size(), 2u);
+    EXPECT_EQ(s.record.interfaces[0].name, "S+");
+    EXPECT_EQ(s.record.interfaces[1].name, "S-");
+    EXPECT_EQ(s.record.combined_status.size(), 32u);
+  }
+}
+
+TEST(BarLayer, LayerModeRejectsBadThickness) {
+  for (double eps : {0.0, -1e-3, std::nan("")})
+    EXPECT_THROW(solve_bar_layer(bar::MeshOptions{}, 450, 540, eps, "x", SolverKind::Fast, SolverOptions{}),
+                 std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace thinlayer
