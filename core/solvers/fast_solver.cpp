@@ -24,7 +24,7 @@ struct Condensed {
   std::vector<double> friction;
 };
 
-Condensed condense(const ContactProblem& problem, const CondensedInterface& ci) {
+Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, double complementarity_scale) {
   const int m = problem.num_nodes();
   Condensed c{ci.W(), ci.g0(), ci.B_L(), ci.S(), ci.f_L(), Eigen::VectorXd::Zero(2 * m), {}, {}, {}};
   for (int k = 0; k < m; ++k) {
@@ -35,9 +35,10 @@ Condensed condense(const ContactProblem& problem, const CondensedInterface& ci) 
     for (int row = 0; row < 2; ++row) {
       const double C = problem.compliance()[2 * k + row];
       if (std::isfinite(C)) c.W(2 * k + row, 2 * k + row) += C;
-      // Not 1/diag(W + C): on a face of a floating body W can be zero (the layer on the bar's
-      // foundation); the nodal stiffness of both sides is what the residual uses anyway.
-      c.kappa[2 * k + row] = problem.kappa()[2 * k + row];
+      // The complementarity parameter of the Newton method: the nodal stiffness of both sides
+      // (not 1/diag(W + C), which is zero on a face of a floating body), scaled down so that
+      // the statuses follow the forces more than the jumps (see SolverOptions).
+      c.kappa[2 * k + row] = complementarity_scale * problem.kappa()[2 * k + row];
     }
   }
   return c;
@@ -249,7 +250,7 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
   report.solver = "fast";
   report.tolerance = options.tolerance;
   const int max_iterations = options.max_iterations > 0 ? options.max_iterations : 200;
-  const Condensed c = condense(problem, condensed);
+  const Condensed c = condense(problem, condensed, options.complementarity_scale);
   const int nw = floating_unknowns(c);
 
   Eigen::VectorXd r = Eigen::VectorXd::Zero(c.g0.size());
@@ -266,11 +267,15 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
     // point iterations make every step well posed — S + αP, with P = diag(S), pulls w towards
     // the previous w — and leave the answer unchanged: at convergence w equals the previous w
     // and the pull vanishes. Convergence is judged on the true (unregularised) residual.
-    // α starts at options.proximal_weight and shrinks tenfold each time the statuses settle,
-    // so that once the active set is right the steps become plain Newton steps.
+    // Each time the statuses settle, try them on the unregularised problem (one linear
+    // solve, exact if the active set is right). α shrinks tenfold while the steps settle
+    // quickly and grows back tenfold when they do not, so the steps stay well posed.
     Condensed proximal = c;
     const Eigen::VectorXd P = c.S.diagonal().cwiseAbs().cwiseMax(1e-300);
     double alpha = options.proximal_weight;
+    auto true_residual = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& ww) {
+      return contact_residual(problem, condensed.displacement(problem, rr, ww), rr).value();
+    };
     for (proximal_steps = 1; report.iterations < max_iterations; ++proximal_steps) {
       proximal.S = c.S;
       proximal.S.diagonal() += alpha * P;
@@ -280,9 +285,17 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
       run.nsgs_sweeps += step.nsgs_sweeps;
       run.settled = step.settled;
       run.singular = step.singular;
-      const Eigen::VectorXd u = condensed.displacement(problem, r, w);
-      if (contact_residual(problem, u, r).value() <= options.tolerance) break;
-      if (step.settled) alpha = std::max(alpha * 0.1, 1e-14);
+      if (true_residual(r, w) <= options.tolerance) break;
+      if (step.settled) {
+        const Step polish = solve_statuses(c, statuses);
+        if (!polish.singular && true_residual(polish.r, polish.w) <= options.tolerance) {
+          r = polish.r;
+          w = polish.w;
+          break;
+        }
+      }
+      const bool quick = step.settled && step.iterations <= 3;
+      alpha = quick ? std::max(alpha * 0.1, options.proximal_weight * 1e-6) : std::min(alpha * 10, options.proximal_weight);
     }
   }
 
