@@ -99,7 +99,7 @@ BarScene solve_bar(BarBulk& bulk, const InterfaceLaw& law, const std::string& la
 
 BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, double mu_bar, double eps,
                               const std::string& law_case, SolverKind solver, const SolverOptions& options,
-                              double status_tolerance) {
+                              double status_tolerance, int layer_elements) {
   if (!(eps > 0) || !std::isfinite(eps)) throw std::invalid_argument("eps must be finite and > 0");
   const InterfaceLaw law = InterfaceLaw::make(lambda_bar, mu_bar, bar::friction);  // validates
   if (!std::isfinite(lambda_bar) || !std::isfinite(mu_bar) || !(mu_bar > 0))
@@ -109,12 +109,14 @@ BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, d
   layer.eps = eps;
   layer.lambda_eps = eps * law.lambda_bar;
   layer.mu_eps = eps * law.mu_bar;
+  layer.layer_elements = layer_elements;
   const Model model = bar::make_layer_model(mesh, layer);
   const LinearSystem system(model);
   const ContactProblem problem(system, bar::make_layer_interfaces(model));
   std::unique_ptr<CondensedInterface> condensed;
   if (solver == SolverKind::Fast) condensed = std::make_unique<CondensedInterface>(problem);
   BarLayerScene scene;
+  scene.layer_quality = mesh_quality(model.bodies[1].mesh);
   scene.report = run_solver(problem, condensed.get(), solver, options);
   std::ostringstream id;
   id << bar_scene_id(mesh, law_case, 1.0, solver) << "-layer-eps" << eps;
@@ -125,6 +127,8 @@ BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, d
   r.numbers["mu_eps"] = layer.mu_eps;
   r.integers["layer_elements"] = layer.layer_elements;
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
+  r.numbers["layer_min_angle_deg"] = scene.layer_quality.min_angle_deg;
+  r.numbers["layer_max_aspect_ratio"] = scene.layer_quality.max_aspect_ratio;
   const InterfaceFields& plus = r.interfaces.at(0);
   const InterfaceFields& minus = r.interfaces.at(1);
   scene.plus_face = plus.counts();

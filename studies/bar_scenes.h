@@ -7,6 +7,7 @@
 #include "cases/bar/bar.h"
 #include "core/fem/linear_system.h"
 #include "core/io/scene_record.h"
+#include "core/mesh/layer_band.h"
 #include "core/solvers/condensed_interface.h"
 #include "core/solvers/solve_report.h"
 
@@ -56,10 +57,11 @@ struct BarLayerScene {
   SceneRecord record;
   SolveReport report;
   StatusCount plus_face, minus_face, combined;
+  MeshQuality layer_quality;
 };
 BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, double mu_bar, double eps,
                               const std::string& law_case, SolverKind solver, const SolverOptions& options,
-                              double status_tolerance = default_status_tolerance);
+                              double status_tolerance = default_status_tolerance, int layer_elements = 2);
 
 // Runs the chosen solver; the fast one reuses `condensed` when given.
 SolveReport run_solver(const ContactProblem& problem, const CondensedInterface* condensed, SolverKind solver,

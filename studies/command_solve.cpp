@@ -1,63 +1,71 @@
 #include "studies/command_solve.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 
 #include "core/io/reference_tables.h"
 #include "studies/args.h"
 #include "studies/bar_scenes.h"
+#include "studies/dovetail_scenes.h"
 #include "studies/options.h"
 
 namespace thinlayer {
 
-const char* const solve_help = R"(usage: thinlayer solve --case bar [options] [--out FILE.h5]
+const char* const solve_help = R"(usage: thinlayer solve --case bar|dovetail [--mode limit|layer] [options] [--out FILE.h5]
 
-Solves one scene and prints its gap/slide/stick counts, iterations, residual and time.
+Solves one scene and prints its gap/slide/stick counts, iterations, residual and times.
 
-  --case NAME          bar (the dovetail and the layer mode come with the thin-layer work)
-  --mode limit         the limit interface law on S (default)
+  --case NAME          bar (paper 4.3, Table 3) | dovetail (paper 3.2, Table 2)
+  --mode NAME          limit: the limit interface law on S (default)
+                       layer: the meshed layer of thickness --eps, Signorini-Coulomb on both faces
+  --eps E              layer thickness (layer mode), mm for the bar, L = 1 units for the dovetail
+  --layer-elements N   Q1 elements through the layer's thickness, >= 2 (default 2)
+  --solver NAME        fast (default) | relaxation (the paper's algorithm)
+  --out FILE.h5        write the scene (SPEC section 4 schema); nothing is written on error
+
+Bar:
   --row N              Table 3 row 1..6: (lambda_bar, mu_bar) from reference/table3_paper.csv
   --lambda-bar X       lambda_bar in daN/mm^3, 0 <= X <= inf (instead of --row)
   --mu-bar X           mu_bar in daN/mm^3, 0 <= X <= inf (instead of --row)
-  --friction F         Coulomb coefficient f >= 0 (default: the case's, 1 for the bar)
+  --friction F         Coulomb coefficient f >= 0 (default 1; limit mode)
   --scale S            multiplies lambda_bar and mu_bar (sensitivity study), default 1
-  --solver NAME        fast (default) | relaxation (the paper's algorithm)
-)" MESH_AND_SOLVER_HELP R"(  --out FILE.h5        write the scene (SPEC section 4 schema); nothing is written on error
+    In layer mode the layer has lambda_eps = eps lambda_bar, mu_eps = eps mu_bar.
+)" MESH_AND_SOLVER_HELP R"(
+Dovetail:
+  --law-case C         Table 2 case a..i: (gamma, delta) from reference/table2.csv
+  --gamma G --delta D  the exponents of lambda_eps = eps^G lambda_g, mu_eps = eps^D mu_g
+                       (G >= 0, 0 <= D < 2) instead of --law-case
+  --h-interface H      element size along S (default 0.025: 93 nodes on S)
+  --h-far H            element size far from S (default 0.1)
 
 Exit status: 0 converged, 1 not converged (the result is still written), 2 bad input.
 )";
 
 namespace {
 
+const std::set<std::string> bar_only = {"row", "lambda-bar", "mu-bar", "friction", "scale", "nx", "ny", "element",
+                                        "diagonal", "plane"};
+const std::set<std::string> dovetail_only = {"law-case", "gamma", "delta", "h-interface", "h-far"};
+
 struct SolveInput {
-  bar::MeshOptions mesh;
-  InterfaceLaw law;
-  std::string law_case;
+  std::string case_name, mode, law_case, out;
   SolverKind solver = SolverKind::Fast;
   SolverOptions options;
-  std::string out;
+  double eps = 0;
+  int layer_elements = 2;
+  // bar
+  bar::MeshOptions bar_mesh;
+  InterfaceLaw law;
+  // dovetail
+  dovetail::MeshOptions dovetail_mesh;
+  dovetail::Exponents exponents;
 };
 
-SolveInput parse_solve(const std::vector<std::string>& argv) {
-  std::set<std::string> valued = {"case", "mode", "row", "lambda-bar", "mu-bar", "friction", "scale", "solver", "out"};
-  valued.insert(mesh_and_solver_options.begin(), mesh_and_solver_options.end());
-  const Args args(argv, valued, {"verbose"});
-  if (!args.positional().empty()) throw std::invalid_argument("unexpected argument '" + args.positional()[0] + "'");
-  const std::string case_name = args.text("case", "");
-  if (case_name.empty()) throw std::invalid_argument("--case is required (bar)");
-  if (case_name == "dovetail") throw std::invalid_argument("case 'dovetail' is not implemented yet (thin-layer issue)");
-  if (case_name != "bar") throw std::invalid_argument("unknown case '" + case_name + "' (expected bar)");
-  const std::string mode = args.text("mode", "limit");
-  if (mode == "layer") throw std::invalid_argument("mode 'layer' is not implemented yet (thin-layer issue)");
-  if (mode != "limit") throw std::invalid_argument("unknown mode '" + mode + "' (expected limit)");
-
-  SolveInput in;
-  in.mesh = parse_bar_mesh(args);
-  in.solver = parse_solver(args.text("solver", "fast"));
-  in.options = parse_solver_options(args);
-  in.out = args.text("out", "");
-
+void parse_bar(const Args& args, SolveInput& in) {
+  in.bar_mesh = parse_bar_mesh(args);
   double lambda_bar = 0, mu_bar = 0;
   if (args.has("row")) {
     if (args.has("lambda-bar") || args.has("mu-bar")) throw std::invalid_argument("give either --row or --lambda-bar/--mu-bar");
@@ -72,14 +80,126 @@ SolveInput parse_solve(const std::vector<std::string>& argv) {
     if (!args.has("lambda-bar") || !args.has("mu-bar")) throw std::invalid_argument("give --row N, or both --lambda-bar and --mu-bar");
     lambda_bar = args.number("lambda-bar", 0);
     mu_bar = args.number("mu-bar", 0);
-    in.law_case = "";
   }
   const double scale = args.number("scale", 1.0);
   if (!(scale > 0) || std::isinf(scale)) throw std::invalid_argument("--scale must be finite and > 0");
+  if (in.mode == "layer" && args.has("friction")) throw std::invalid_argument("--friction applies to the limit mode only");
   in.law = InterfaceLaw::make(lambda_bar * scale, mu_bar * scale, args.number("friction", bar::friction));
   if (in.law_case.empty()) in.law_case = std::string(1, in.law.table1_case());
-  if (args.has("verbose")) in.options.verbose = true;
+}
+
+void parse_dovetail(const Args& args, SolveInput& in) {
+  in.dovetail_mesh.h_interface = args.number("h-interface", in.dovetail_mesh.h_interface);
+  in.dovetail_mesh.h_far = args.number("h-far", in.dovetail_mesh.h_far);
+  in.dovetail_mesh.layer_elements = in.layer_elements;
+  if (args.has("law-case")) {
+    if (args.has("gamma") || args.has("delta")) throw std::invalid_argument("give either --law-case or --gamma/--delta");
+    const std::string c = args.text("law-case", "");
+    if (c.size() != 1) throw std::invalid_argument("unknown law case '" + c + "' (expected a..i)");
+    in.exponents = dovetail::exponents_of(c[0]);
+    in.law_case = c;
+  } else {
+    if (!args.has("gamma") || !args.has("delta")) throw std::invalid_argument("give --law-case C, or both --gamma and --delta");
+    in.exponents = dovetail::validated({args.number("gamma", 0), args.number("delta", 0)});
+  }
+}
+
+SolveInput parse_solve(const std::vector<std::string>& argv) {
+  std::set<std::string> valued = {"case", "mode", "solver", "out", "eps", "layer-elements"};
+  valued.insert(mesh_and_solver_options.begin(), mesh_and_solver_options.end());
+  valued.insert(bar_only.begin(), bar_only.end());
+  valued.insert(dovetail_only.begin(), dovetail_only.end());
+  const Args args(argv, valued, {"verbose"});
+  if (!args.positional().empty()) throw std::invalid_argument("unexpected argument '" + args.positional()[0] + "'");
+
+  SolveInput in;
+  in.case_name = args.text("case", "");
+  if (in.case_name.empty()) throw std::invalid_argument("--case is required (bar or dovetail)");
+  if (in.case_name != "bar" && in.case_name != "dovetail")
+    throw std::invalid_argument("unknown case '" + in.case_name + "' (expected bar or dovetail)");
+  for (const auto& name : in.case_name == "bar" ? dovetail_only : bar_only)
+    if (args.has(name)) throw std::invalid_argument("--" + name + " does not apply to the " + in.case_name);
+  in.mode = args.text("mode", "limit");
+  if (in.mode != "limit" && in.mode != "layer") throw std::invalid_argument("unknown mode '" + in.mode + "' (expected limit or layer)");
+  if (in.mode == "layer") {
+    if (!args.has("eps")) throw std::invalid_argument("layer mode needs --eps");
+    in.eps = args.number("eps", 0);
+    if (!(in.eps > 0) || std::isinf(in.eps)) throw std::invalid_argument("--eps must be finite and > 0");
+  } else if (args.has("eps") || args.has("layer-elements")) {
+    throw std::invalid_argument("--eps and --layer-elements apply to the layer mode only");
+  }
+  in.layer_elements = args.integer("layer-elements", 2);
+  if (in.layer_elements < 2) throw std::invalid_argument("--layer-elements must be >= 2");
+  in.solver = parse_solver(args.text("solver", "fast"));
+  in.options = parse_solver_options(args);
+  in.options.verbose = args.has("verbose");
+  in.out = args.text("out", "");
+  if (in.case_name == "bar") parse_bar(args, in);
+  else parse_dovetail(args, in);
   return in;
+}
+
+void print_counts(const char* what, const StatusCount& c) {
+  std::printf("  %-9s gap %3d  slide %3d  stick %3d\n", what, c.gap, c.slide, c.stick);
+}
+
+void print_report(const SolveReport& report, const SceneRecord& record) {
+  std::printf("  status tolerance %g (relative)\n", record.numbers.at("status_tolerance"));
+  std::printf("  %s\n  residual: interface %.3e, bulk %.3e; iterations %d; solve %.4f s (+ setup %.4f s)\n",
+              report.message.c_str(), report.residual.interface, report.residual.bulk, report.iterations,
+              report.wall_time_s, record.numbers.at("setup_time_s"));
+}
+
+void print_layer_quality(const MeshQuality& q, double eps) {
+  std::printf("  layer mesh: %d Q1 cells, angles %.1f..%.1f deg, aspect ratio up to %.3g (eps %g), "
+              "scaled Jacobian >= %.3f\n", q.cells, q.min_angle_deg, q.max_angle_deg, q.max_aspect_ratio, eps,
+              q.min_scaled_jacobian);
+}
+
+// Solves the scene; returns its record (for --out) and report.
+std::pair<SceneRecord, SolveReport> solve_scene(const SolveInput& in) {
+  if (in.case_name == "bar") {
+    std::printf("bar %s (lambda_bar %g, mu_bar %g; Table 1 case %c), %s %dx%d, plane %s, %s mode, solver %s\n",
+                in.law_case.c_str(), in.law.lambda_bar, in.law.mu_bar, in.law.table1_case(), to_string(in.bar_mesh.element),
+                in.bar_mesh.nx, in.bar_mesh.ny, to_string(in.bar_mesh.plane), in.mode.c_str(), to_string(in.solver));
+    if (in.mode == "limit") {
+      BarBulk bulk(in.bar_mesh);
+      BarScene s = solve_bar(bulk, in.law, in.law_case, in.solver, in.options);
+      print_counts("S", s.counts);
+      print_report(s.report, s.record);
+      return {std::move(s.record), std::move(s.report)};
+    }
+    BarLayerScene s = solve_bar_layer(in.bar_mesh, in.law.lambda_bar, in.law.mu_bar, in.eps, in.law_case, in.solver,
+                                      in.options, default_status_tolerance, in.layer_elements);
+    print_layer_quality(s.layer_quality, in.eps);
+    print_counts("S+", s.plus_face);
+    print_counts("S-", s.minus_face);
+    print_counts("combined", s.combined);
+    print_report(s.report, s.record);
+    return {std::move(s.record), std::move(s.report)};
+  }
+  DovetailLimitBulk bulk(in.dovetail_mesh);
+  const InterfaceLaw law = dovetail::limit_law(in.exponents);
+  std::printf("dovetail case %s (gamma %g, delta %g; limit law: case %c, lambda_bar %g, mu_bar %g, f %g), %s mode, "
+              "solver %s\n", in.law_case.empty() ? "custom" : in.law_case.c_str(), in.exponents.gamma,
+              in.exponents.delta, law.table1_case(), law.lambda_bar, law.mu_bar, law.friction, in.mode.c_str(),
+              to_string(in.solver));
+  const auto& m = bulk.meshes();
+  std::printf("  meshes: base %d + tenon %d nodes, %d nodes on S, meshed in %.3f s\n", m.base.num_nodes(),
+              m.tenon.num_nodes(), static_cast<int>(m.base.node_set("S").size()), bulk.meshing_time_s());
+  if (in.mode == "limit") {
+    DovetailScene s = solve_dovetail_limit(bulk, in.exponents, in.law_case, in.solver, in.options);
+    print_counts("S", s.limit);
+    print_report(s.report, s.record);
+    return {std::move(s.record), std::move(s.report)};
+  }
+  DovetailScene s = solve_dovetail_layer(bulk, in.exponents, in.eps, in.law_case, in.solver, in.options);
+  print_layer_quality(s.layer_quality, in.eps);
+  print_counts("S+", s.plus_face);
+  print_counts("S-", s.minus_face);
+  print_counts("combined", s.combined);
+  print_report(s.report, s.record);
+  return {std::move(s.record), std::move(s.report)};
 }
 
 }  // namespace
@@ -96,23 +216,14 @@ int command_solve(const std::vector<std::string>& argv) {
     // Open the output first: an unwritable path is bad input, found before any work.
     std::unique_ptr<H5Writer> out;
     if (!in.out.empty()) out = std::make_unique<H5Writer>(in.out);
-    BarBulk bulk(in.mesh);
-    const BarScene scene = solve_bar(bulk, in.law, in.law_case, in.solver, in.options);
-    const auto& c = scene.counts;
-    std::printf("bar %s (lambda_bar %g, mu_bar %g, f %g; Table 1 case %c), %s %dx%d, plane %s, solver %s\n",
-                in.law_case.c_str(), in.law.lambda_bar, in.law.mu_bar, in.law.friction, in.law.table1_case(),
-                to_string(in.mesh.element), in.mesh.nx, in.mesh.ny, to_string(in.mesh.plane), to_string(in.solver));
-    std::printf("  gap %d  slide %d  stick %d   (status tolerance %g)\n", c.gap, c.slide, c.stick, default_status_tolerance);
-    std::printf("  %s\n  residual: interface %.3e, bulk %.3e; iterations %d; solve %.4f s (+ setup %.4f s)\n",
-                scene.report.message.c_str(), scene.report.residual.interface, scene.report.residual.bulk,
-                scene.report.iterations, scene.report.wall_time_s, scene.record.numbers.at("setup_time_s"));
+    const auto [record, report] = solve_scene(in);
     if (out) {
-      write_scene(*out, scene.record);
+      write_scene(*out, record);
       out->commit();
       std::printf("  wrote %s\n", in.out.c_str());
     }
-    if (!scene.report.converged) {
-      std::cerr << "thinlayer solve: " << scene.report.message << "\n";
+    if (!report.converged) {
+      std::cerr << "thinlayer solve: " << report.message << "\n";
       return 1;
     }
     return 0;

@@ -15,7 +15,8 @@ namespace thinlayer {
   "  --diagonal D         P1 only: right (default, '/') | left ('\\')\n" \
   "  --plane P            strain (default) | stress\n" \
   "  --tolerance T        SPEC residual to reach (default 1e-10)\n" \
-  "  --max-iterations N   solver iteration cap (default: fast 200, relaxation 100000 sweeps)\n" \
+  "  --max-iterations N   solver iteration cap (default: fast 200, 1000 with a floating layer;\n" \
+  "                       relaxation 100000 sweeps)\n" \
   "  --omega W            relaxation's over-relaxation coefficient in (0, 2) (default 1.8)\n"
 
 inline const std::set<std::string> mesh_and_solver_options = {"nx", "ny", "element", "diagonal", "plane",

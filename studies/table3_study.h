@@ -5,7 +5,9 @@
 //   2. the sensitivity study: plane strain/stress × ny ∈ {8,16,32,64} × Q1/P1 (both
 //      diagonals) × nx ∈ {31,32} × scale s ∈ {1,10,100,1e3,1e4}: which variants reproduce
 //      which paper rows;
-//   3. where along AD the gap-contact and stick-slip transitions lie (mm), under refinement.
+//   3. where along AD the gap-contact and stick-slip transitions lie (mm), under refinement;
+//   4. the thin-layer mode at ε = 1e-2, 1e-3, 1e-4, whose combined counts must reach the
+//      limit mode's.
 #include <string>
 #include <vector>
 

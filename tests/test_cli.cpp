@@ -68,6 +68,24 @@ TEST_F(Cli, BadInputGivesOneLineErrorNonZeroExitAndNoFile) {
       "solve --case bar --row 1 --solver magic",
       "solve --case bar --row 1 --bogus-option 3",
       "solve --case bar",
+      "solve --case bar --mode layer --row 1",
+      "solve --case bar --mode layer --row 1 --eps 0",
+      "solve --case bar --mode layer --row 1 --eps -1e-3",
+      "solve --case bar --mode layer --row 1 --eps nan",
+      "solve --case bar --mode limit --row 1 --eps 1e-3",
+      "solve --case bar --mode sideways --row 1",
+      "solve --case dovetail --mode layer --law-case d --eps 0",
+      "solve --case dovetail --mode layer --law-case d --eps -1",
+      "solve --case dovetail --mode layer --law-case d --eps NaN",
+      "solve --case dovetail --mode layer --law-case d --eps 1e-3 --layer-elements 1",
+      "solve --case dovetail --law-case z",
+      "solve --case dovetail --law-case dd",
+      "solve --case dovetail --gamma 1 --delta 2",
+      "solve --case dovetail --gamma 1 --delta 2.5",
+      "solve --case dovetail --gamma -0.5 --delta 1",
+      "solve --case dovetail --gamma nan --delta 1",
+      "solve --case dovetail --gamma 1",
+      "solve --case dovetail --law-case d --row 1",
   };
   for (const char* args : bad) {
     SCOPED_TRACE(args);
@@ -156,6 +174,27 @@ TEST_F(Cli, SolveWritesEverySpecField) {
     h5.read_doubles(g + "/reactions/" + b, &shape);
     EXPECT_EQ(shape, (std::vector<size_t>{2})) << b;
   }
+}
+
+TEST_F(Cli, LayerModeWritesBothFacesOfTheLayer) {
+  const fs::path file = dir / "layer.h5";
+  const CliRun r = run("solve --case dovetail --mode layer --law-case d --eps 1e-3 --h-interface 0.05 --h-far 0.2 --out " +
+                       file.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("aspect ratio"), std::string::npos) << r.out;  // the layer's mesh quality is printed
+  thinlayer::H5Reader h5(file.string());
+  const std::string g = "/scenes/" + h5.children("/scenes").at(0);
+  EXPECT_EQ(h5.attr_string(g, "case"), "dovetail");
+  EXPECT_EQ(h5.attr_string(g, "mode"), "layer");
+  EXPECT_EQ(h5.attr_string(g, "law_case"), "d");
+  EXPECT_DOUBLE_EQ(h5.attr_double(g, "eps"), 1e-3);
+  EXPECT_DOUBLE_EQ(h5.attr_double(g, "gamma"), 1.0);
+  EXPECT_DOUBLE_EQ(h5.attr_double(g, "delta"), 1.0);
+  EXPECT_EQ(h5.children(g + "/interface"), (std::vector<std::string>{"S+", "S-"}));
+  for (const char* face : {"S+", "S-"})
+    for (const char* field : {"x", "normal", "jump_N", "jump_T", "sigma_N", "sigma_T", "status"})
+      EXPECT_TRUE(h5.exists(g + "/interface/" + face + "/" + field)) << face << "/" << field;
+  EXPECT_EQ(h5.children(g + "/reactions"), (std::vector<std::string>{"base_bottom", "tenon_top"}));
 }
 
 TEST_F(Cli, RelaxationSolveReportsNonConvergenceWithExitStatus1) {

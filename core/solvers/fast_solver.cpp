@@ -66,7 +66,7 @@ std::vector<Active> guess_statuses(const Condensed& c, const Eigen::VectorXd& r,
 // Solves A x = b for a matrix that mixes compliances (mm/daN), stiffnesses (daN/mm) and
 // plain coefficients, whose scales can differ by 1e15 in the layer mode: equilibrate rows and
 // columns (a few Ruiz sweeps), factor once, then refine the solution against the original A.
-Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
+Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* rcond = nullptr) {
   const Eigen::Index n = A.rows();
   Eigen::VectorXd row = Eigen::VectorXd::Ones(n), col = Eigen::VectorXd::Ones(n);
   Eigen::MatrixXd M = A;
@@ -79,6 +79,7 @@ Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::Vector
     M = row.asDiagonal() * A * col.asDiagonal();
   }
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
+  if (rcond) *rcond = lu.rcond();
   Eigen::VectorXd x = col.asDiagonal() * lu.solve(row.asDiagonal() * b);
   for (int refinement = 0; refinement < 3; ++refinement)
     x += col.asDiagonal() * lu.solve(row.asDiagonal() * (b - A * x));
@@ -102,50 +103,55 @@ struct Step {
 };
 
 Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
-  const int m2 = static_cast<int>(c.g0.size()), nw = floating_unknowns(c), n = m2 + nw;
+  // The statuses fix part of r outright: r = 0 at a gap, r_T = ±f|r_N| on a slide, r_T = 0
+  // without friction. The remaining unknowns are r_N at every contact, r_T at every stick,
+  // and w: r = Q x_r, where column j of Q is unit at its row, plus the slide coupling.
+  const int m2 = static_cast<int>(c.g0.size()), nw = floating_unknowns(c);
+  std::vector<int> rows;  // the equation (d_N = 0 or d_T = 0) that goes with each unknown
+  std::vector<std::pair<int, double>> coupling;  // for an r_N column: the T row it drives, and how
+  for (int k = 0; k < static_cast<int>(s.size()); ++k) {
+    if (s[k] == Active::Gap) continue;
+    rows.push_back(2 * k);
+    const bool slide = s[k] == Active::SlidePositive || s[k] == Active::SlideNegative;
+    // SlidePositive: r_T = +f p = -f r_N; SlideNegative: r_T = -f p = +f r_N.
+    coupling.push_back({slide ? 2 * k + 1 : -1,
+                        s[k] == Active::SlidePositive ? -c.friction[k] : c.friction[k]});
+    if (s[k] == Active::Stick) {
+      rows.push_back(2 * k + 1);
+      coupling.push_back({-1, 0.0});
+    }
+  }
+  const int nr = static_cast<int>(rows.size()), n = nr + nw;
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(m2, nr);
+  for (int j = 0; j < nr; ++j) {
+    Q(rows[j], j) = 1;
+    if (coupling[j].first >= 0) Q(coupling[j].first, j) = coupling[j].second;
+  }
+  const Eigen::MatrixXd WQ = c.W * Q;
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
-  if (nw) {  // S w - B_Lᵀ r = f_L
-    A.bottomLeftCorner(nw, m2) = -c.B_L.transpose();
+  for (int i = 0; i < nr; ++i) {  // d = 0 on the active rows: W Q x_r + B_L w = -g0
+    A.row(i).head(nr) = WQ.row(rows[i]);
+    if (nw) A.row(i).tail(nw) = c.B_L.row(rows[i]);
+    b[i] = -c.g0[rows[i]];
+  }
+  if (nw) {  // S w - B_Lᵀ Q x_r = f_L
+    A.bottomLeftCorner(nw, nr) = -c.B_L.transpose() * Q;
     A.bottomRightCorner(nw, nw) = c.S;
     b.tail(nw) = c.f_L;
   }
-  for (int k = 0; k < static_cast<int>(s.size()); ++k) {
-    const int N = 2 * k, T = 2 * k + 1;
-    if (s[k] == Active::Gap) {  // r = 0
-      A(N, N) = 1;
-      A(T, T) = 1;
-      continue;
-    }
-    A.row(N).head(m2) = c.W.row(N);  // d_N = 0
-    if (nw) A.row(N).tail(nw) = c.B_L.row(N);
-    b[N] = -c.g0[N];
-    switch (s[k]) {
-      case Active::Stick:  // d_T = 0
-        A.row(T).head(m2) = c.W.row(T);
-        if (nw) A.row(T).tail(nw) = c.B_L.row(T);
-        b[T] = -c.g0[T];
-        break;
-      case Active::SlidePositive:  // r_T = +f p = -f r_N
-      case Active::SlideNegative:  // r_T = -f p = +f r_N
-        A(T, T) = 1;
-        A(T, N) = s[k] == Active::SlidePositive ? c.friction[k] : -c.friction[k];
-        break;
-      default:  // frictionless: r_T = 0
-        A(T, T) = 1;
-        break;
-    }
-  }
   Step step;
-  Eigen::VectorXd x = solve_equilibrated(A, b);
+  double rcond = 1;
+  Eigen::VectorXd x = n ? solve_equilibrated(A, b, &rcond) : Eigen::VectorXd();
   // A floating body whose contacts are all open (or only slide) has rigid motions the step
   // cannot fix: the system is singular. Then take the minimum-norm solution and say so.
   const double scale = std::max(b.norm(), 1e-300);
-  if (!x.allFinite() || (A * x - b).norm() > 1e-8 * scale) {
+  step.singular = rcond < 1e-14;
+  if (n && (!x.allFinite() || (A * x - b).norm() > 1e-8 * scale)) {
     x = A.completeOrthogonalDecomposition().solve(b);
     step.singular = true;
   }
-  step.r = x.head(m2);
+  step.r = Q * x.head(nr);
   step.w = x.tail(nw);
   return step;
 }
@@ -249,9 +255,10 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
   SolveReport report;
   report.solver = "fast";
   report.tolerance = options.tolerance;
-  const int max_iterations = options.max_iterations > 0 ? options.max_iterations : 200;
   const Condensed c = condense(problem, condensed, options.complementarity_scale);
   const int nw = floating_unknowns(c);
+  // A floating body needs proximal steps, each a few Newton steps: allow more of them.
+  const int max_iterations = options.max_iterations > 0 ? options.max_iterations : nw ? 1000 : 200;
 
   Eigen::VectorXd r = Eigen::VectorXd::Zero(c.g0.size());
   Eigen::VectorXd w = Eigen::VectorXd::Zero(nw);
@@ -297,6 +304,8 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
       const bool quick = step.settled && step.iterations <= 3;
       alpha = quick ? std::max(alpha * 0.1, options.proximal_weight * 1e-6) : std::min(alpha * 10, options.proximal_weight);
     }
+    // Is the answer unique? Not if the final statuses leave the floating body free to move.
+    run.singular = solve_statuses(c, statuses).singular;
   }
 
   report.r = r;
@@ -308,7 +317,9 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
   msg << (report.converged ? "converged" : "NOT converged") << " after " << report.iterations << " active-set steps"
       << (proximal_steps ? " in " + std::to_string(proximal_steps) + " proximal steps" : "")
       << (run.nsgs_sweeps ? " and " + std::to_string(run.nsgs_sweeps) + " NSGS sweeps" : "")
-      << (run.singular ? " (a floating body is not held by its contacts: minimum-norm position taken)" : "")
+      << (run.singular ? " (a floating body is not held by its contacts: its position is not unique; "
+                         "the one reported is the proximal iterate's, with forces unaffected)"
+                       : "")
       << (!report.converged && run.settled && !proximal_steps
               ? " (statuses settled but the linear solve lost accuracy: ill-conditioned system)"
               : "")

@@ -1,0 +1,124 @@
+#include "studies/dovetail_scenes.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace thinlayer {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void add_dovetail_attributes(SceneRecord& r, const std::string& mode, const std::string& law_case,
+                             const dovetail::Exponents& e, double eps, const dovetail::MeshOptions& mesh) {
+  const InterfaceLaw law = dovetail::limit_law(e);
+  r.text["case"] = "dovetail";
+  r.text["mode"] = mode;
+  r.text["law_case"] = law_case.empty() ? "custom" : law_case;
+  r.text["table1_case"] = std::string(1, law.table1_case());
+  r.text["plane"] = "strain";
+  r.text["element"] = "Q1";
+  r.numbers["eps"] = eps;
+  r.numbers["gamma"] = e.gamma;
+  r.numbers["delta"] = e.delta;
+  r.numbers["lambda_bar"] = law.lambda_bar;  // the limit law's, in both modes
+  r.numbers["mu_bar"] = law.mu_bar;
+  r.numbers["friction"] = dovetail::friction;
+  r.numbers["h_interface"] = mesh.h_interface;
+  r.numbers["h_far"] = mesh.h_far;
+}
+
+std::string scene_id(const std::string& mode, const std::string& law_case, const dovetail::Exponents& e, double eps,
+                     SolverKind solver, const dovetail::MeshOptions& mesh) {
+  std::ostringstream id;
+  id << "dovetail-" << mode << "-";
+  if (law_case.empty()) id << "g" << e.gamma << "-d" << e.delta;
+  else id << law_case;
+  if (mode == "layer") id << "-eps" << eps;
+  id << "-h" << mesh.h_interface << "-" << to_string(solver);
+  return id.str();
+}
+
+StatusCount counts_of(const std::vector<int>& statuses) {
+  std::vector<NodeStatus> s;
+  for (int v : statuses) s.push_back(static_cast<NodeStatus>(v));
+  return count_statuses(s);
+}
+
+}  // namespace
+
+DovetailLimitBulk::DovetailLimitBulk(const dovetail::MeshOptions& options) : options_(options) {
+  const auto start = std::chrono::steady_clock::now();
+  meshes_ = dovetail::make_limit_meshes(options);
+  meshing_time_s_ = seconds_since(start);
+  model_ = dovetail::make_limit_model(meshes_);
+  system_ = std::make_unique<LinearSystem>(model_);
+}
+
+const CondensedInterface& DovetailLimitBulk::condensed() {
+  if (!condensed_) {
+    const ContactProblem geometry(*system_, {dovetail::make_limit_interface(model_, InterfaceLaw{})});
+    condensed_ = std::make_unique<CondensedInterface>(geometry);
+  }
+  return *condensed_;
+}
+
+DovetailScene solve_dovetail_limit(DovetailLimitBulk& bulk, const dovetail::Exponents& e,
+                                   const std::string& law_case, SolverKind solver, const SolverOptions& options,
+                                   double status_tolerance) {
+  const InterfaceLaw law = dovetail::limit_law(dovetail::validated(e));
+  const ContactProblem problem(bulk.system(), {dovetail::make_limit_interface(bulk.model(), law)});
+  const CondensedInterface* condensed = solver == SolverKind::Fast ? &bulk.condensed() : nullptr;
+  DovetailScene scene;
+  scene.report = run_solver(problem, condensed, solver, options);
+  SceneRecord& r = scene.record;
+  r = record_scene(scene_id("limit", law_case, e, 0, solver, bulk.options()), bulk.model(), problem, scene.report,
+                   status_tolerance);
+  add_dovetail_attributes(r, "limit", law_case, e, 0.0, bulk.options());
+  r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
+  r.numbers["meshing_time_s"] = bulk.meshing_time_s();
+  scene.limit = r.interfaces.at(0).counts();
+  return scene;
+}
+
+DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail::Exponents& e, double eps,
+                                   const std::string& law_case, SolverKind solver, const SolverOptions& options,
+                                   double status_tolerance) {
+  const dovetail::Exponents x = dovetail::validated(e);
+  if (!(eps > 0) || !std::isfinite(eps)) throw std::invalid_argument("eps must be finite and > 0");
+  DovetailScene scene;
+  auto start = std::chrono::steady_clock::now();
+  const dovetail::LayerMeshes meshes = dovetail::make_layer_meshes(bulk.meshes(), eps, bulk.options().layer_elements);
+  scene.meshing_time_s = seconds_since(start);
+  scene.layer_quality = mesh_quality(meshes.layer);
+  const Model model = dovetail::make_layer_model(meshes, x);
+  const LinearSystem system(model);
+  const ContactProblem problem(system, dovetail::make_layer_interfaces(model));
+  std::unique_ptr<CondensedInterface> condensed;
+  if (solver == SolverKind::Fast) condensed = std::make_unique<CondensedInterface>(problem);
+  scene.report = run_solver(problem, condensed.get(), solver, options);
+
+  SceneRecord& r = scene.record;
+  r = record_scene(scene_id("layer", law_case, x, eps, solver, bulk.options()), model, problem, scene.report,
+                   status_tolerance);
+  add_dovetail_attributes(r, "layer", law_case, x, eps, bulk.options());
+  r.numbers["lambda_eps"] = model.bodies[1].material.lambda;
+  r.numbers["mu_eps"] = model.bodies[1].material.mu;
+  r.integers["layer_elements"] = bulk.options().layer_elements;
+  r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
+  r.numbers["meshing_time_s"] = scene.meshing_time_s;
+  r.numbers["layer_min_angle_deg"] = scene.layer_quality.min_angle_deg;
+  r.numbers["layer_max_aspect_ratio"] = scene.layer_quality.max_aspect_ratio;
+  const InterfaceFields& plus = r.interfaces.at(0);
+  const InterfaceFields& minus = r.interfaces.at(1);
+  scene.plus_face = plus.counts();
+  scene.minus_face = minus.counts();
+  r.combined_status = combined_statuses(plus, minus);
+  scene.combined = counts_of(r.combined_status);
+  return scene;
+}
+
+}  // namespace thinlayer

@@ -1,0 +1,53 @@
+#pragma once
+// Scenes of the dovetail (SPEC §2.2): the limit mode's nine laws share one bulk; each layer
+// scene builds its own (the layer's moduli depend on the case and on ε).
+#include <memory>
+#include <string>
+
+#include "cases/dovetail/dovetail.h"
+#include "core/fem/linear_system.h"
+#include "core/io/scene_record.h"
+#include "core/mesh/layer_band.h"
+#include "core/solvers/condensed_interface.h"
+#include "studies/bar_scenes.h"
+
+namespace thinlayer {
+
+// The limit-mode meshes, model and (on first use) the condensation shared by the nine laws.
+class DovetailLimitBulk {
+ public:
+  explicit DovetailLimitBulk(const dovetail::MeshOptions& options = {});
+  const dovetail::MeshOptions& options() const { return options_; }
+  const dovetail::LimitMeshes& meshes() const { return meshes_; }
+  const Model& model() const { return model_; }
+  const LinearSystem& system() const { return *system_; }
+  const CondensedInterface& condensed();
+  double meshing_time_s() const { return meshing_time_s_; }
+
+ private:
+  dovetail::MeshOptions options_;
+  dovetail::LimitMeshes meshes_;
+  double meshing_time_s_ = 0;
+  Model model_;
+  std::unique_ptr<LinearSystem> system_;
+  std::unique_ptr<CondensedInterface> condensed_;
+};
+
+struct DovetailScene {
+  SceneRecord record;
+  SolveReport report;
+  // Limit mode: counts on S. Layer mode: per face, and combined (SPEC §2.2).
+  StatusCount limit, plus_face, minus_face, combined;
+  MeshQuality layer_quality;  // layer mode only
+  double meshing_time_s = 0;  // layer mode: building the layer-mode meshes from the limit ones
+};
+
+// law_case: a Table 2 letter, or "" for custom exponents (the record then says "custom").
+DovetailScene solve_dovetail_limit(DovetailLimitBulk& bulk, const dovetail::Exponents& e,
+                                   const std::string& law_case, SolverKind solver, const SolverOptions& options,
+                                   double status_tolerance = default_status_tolerance);
+DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail::Exponents& e, double eps,
+                                   const std::string& law_case, SolverKind solver, const SolverOptions& options,
+                                   double status_tolerance = default_status_tolerance);
+
+}  // namespace thinlayer
