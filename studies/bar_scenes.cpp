@@ -71,16 +71,6 @@ void add_bar_attributes(SceneRecord& r, const bar::MeshOptions& mesh, const std:
 
 }  // namespace
 
-std::vector<int> combined_statuses(const InterfaceFields& plus_face, const InterfaceFields& minus_face) {
-  // Node k of both faces is node k of S; a face may extend beyond S (the bar's S- under D).
-  const size_t n = std::min(plus_face.status.size(), minus_face.status.size());
-  std::vector<int> combined;
-  for (size_t k = 0; k < n; ++k)
-    combined.push_back(static_cast<int>(combined_status(static_cast<NodeStatus>(plus_face.status[k]),
-                                                        static_cast<NodeStatus>(minus_face.status[k]))));
-  return combined;
-}
-
 BarScene solve_bar(BarBulk& bulk, const InterfaceLaw& law, const std::string& law_case, SolverKind solver,
                    const SolverOptions& options, double status_tolerance) {
   const ContactProblem problem(bulk.system(), {bar::make_interface(bulk.model(), law)});
@@ -123,20 +113,8 @@ BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, d
   SceneRecord& r = scene.record;
   r = record_scene(id.str(), model, problem, scene.report, status_tolerance);
   add_bar_attributes(r, mesh, "layer", law_case, lambda_bar, mu_bar, eps);
-  r.numbers["lambda_eps"] = layer.lambda_eps;
-  r.numbers["mu_eps"] = layer.mu_eps;
-  r.integers["layer_elements"] = layer.layer_elements;
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
-  r.numbers["layer_min_angle_deg"] = scene.layer_quality.min_angle_deg;
-  r.numbers["layer_max_aspect_ratio"] = scene.layer_quality.max_aspect_ratio;
-  const InterfaceFields& plus = r.interfaces.at(0);
-  const InterfaceFields& minus = r.interfaces.at(1);
-  scene.plus_face = plus.counts();
-  scene.minus_face = minus.counts();
-  r.combined_status = combined_statuses(plus, minus);
-  std::vector<NodeStatus> combined;
-  for (int v : r.combined_status) combined.push_back(static_cast<NodeStatus>(v));
-  scene.combined = count_statuses(combined);
+  scene.counts = finish_layer_record(r, model.bodies[1].material, layer.layer_elements, scene.layer_quality);
   return scene;
 }
 

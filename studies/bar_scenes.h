@@ -8,6 +8,7 @@
 #include "core/fem/linear_system.h"
 #include "core/io/scene_record.h"
 #include "core/mesh/layer_band.h"
+#include "studies/layer_scene.h"
 #include "core/solvers/condensed_interface.h"
 #include "core/solvers/solve_report.h"
 
@@ -56,7 +57,7 @@ std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_ca
 struct BarLayerScene {
   SceneRecord record;
   SolveReport report;
-  StatusCount plus_face, minus_face, combined;
+  LayerCounts counts;
   MeshQuality layer_quality;
 };
 BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, double mu_bar, double eps,
@@ -67,7 +68,5 @@ BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, d
 SolveReport run_solver(const ContactProblem& problem, const CondensedInterface* condensed, SolverKind solver,
                        const SolverOptions& options);
 
-// Combined statuses of two faces' fields, node by node (SPEC §2.2).
-std::vector<int> combined_statuses(const InterfaceFields& plus_face, const InterfaceFields& minus_face);
 
 }  // namespace thinlayer

@@ -150,10 +150,13 @@ void print_report(const SolveReport& report, const SceneRecord& record) {
               report.wall_time_s, record.numbers.at("setup_time_s"));
 }
 
-void print_layer_quality(const MeshQuality& q, double eps) {
+void print_layer(const MeshQuality& q, double eps, const LayerCounts& c) {
   std::printf("  layer mesh: %d Q1 cells, angles %.1f..%.1f deg, aspect ratio up to %.3g (eps %g), "
               "scaled Jacobian >= %.3f\n", q.cells, q.min_angle_deg, q.max_angle_deg, q.max_aspect_ratio, eps,
               q.min_scaled_jacobian);
+  print_counts("S+", c.plus_face);
+  print_counts("S-", c.minus_face);
+  print_counts("combined", c.combined);
 }
 
 // Solves the scene; returns its record (for --out) and report.
@@ -171,10 +174,7 @@ std::pair<SceneRecord, SolveReport> solve_scene(const SolveInput& in) {
     }
     BarLayerScene s = solve_bar_layer(in.bar_mesh, in.law.lambda_bar, in.law.mu_bar, in.eps, in.law_case, in.solver,
                                       in.options, default_status_tolerance, in.layer_elements);
-    print_layer_quality(s.layer_quality, in.eps);
-    print_counts("S+", s.plus_face);
-    print_counts("S-", s.minus_face);
-    print_counts("combined", s.combined);
+    print_layer(s.layer_quality, in.eps, s.counts);
     print_report(s.report, s.record);
     return {std::move(s.record), std::move(s.report)};
   }
@@ -194,10 +194,7 @@ std::pair<SceneRecord, SolveReport> solve_scene(const SolveInput& in) {
     return {std::move(s.record), std::move(s.report)};
   }
   DovetailScene s = solve_dovetail_layer(bulk, in.exponents, in.eps, in.law_case, in.solver, in.options);
-  print_layer_quality(s.layer_quality, in.eps);
-  print_counts("S+", s.plus_face);
-  print_counts("S-", s.minus_face);
-  print_counts("combined", s.combined);
+  print_layer(s.layer_quality, in.eps, s.counts);
   print_report(s.report, s.record);
   return {std::move(s.record), std::move(s.report)};
 }

@@ -42,11 +42,6 @@ std::string scene_id(const std::string& mode, const std::string& law_case, const
   return id.str();
 }
 
-StatusCount counts_of(const std::vector<int>& statuses) {
-  std::vector<NodeStatus> s;
-  for (int v : statuses) s.push_back(static_cast<NodeStatus>(v));
-  return count_statuses(s);
-}
 
 }  // namespace
 
@@ -105,19 +100,9 @@ DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail
   r = record_scene(scene_id("layer", law_case, x, eps, solver, bulk.options()), model, problem, scene.report,
                    status_tolerance);
   add_dovetail_attributes(r, "layer", law_case, x, eps, bulk.options());
-  r.numbers["lambda_eps"] = model.bodies[1].material.lambda;
-  r.numbers["mu_eps"] = model.bodies[1].material.mu;
-  r.integers["layer_elements"] = bulk.options().layer_elements;
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   r.numbers["meshing_time_s"] = scene.meshing_time_s;
-  r.numbers["layer_min_angle_deg"] = scene.layer_quality.min_angle_deg;
-  r.numbers["layer_max_aspect_ratio"] = scene.layer_quality.max_aspect_ratio;
-  const InterfaceFields& plus = r.interfaces.at(0);
-  const InterfaceFields& minus = r.interfaces.at(1);
-  scene.plus_face = plus.counts();
-  scene.minus_face = minus.counts();
-  r.combined_status = combined_statuses(plus, minus);
-  scene.combined = counts_of(r.combined_status);
+  scene.counts = finish_layer_record(r, model.bodies[1].material, bulk.options().layer_elements, scene.layer_quality);
   return scene;
 }
 

@@ -10,6 +10,7 @@
 #include "core/mesh/layer_band.h"
 #include "core/solvers/condensed_interface.h"
 #include "studies/bar_scenes.h"
+#include "studies/layer_scene.h"
 
 namespace thinlayer {
 
@@ -36,8 +37,8 @@ class DovetailLimitBulk {
 struct DovetailScene {
   SceneRecord record;
   SolveReport report;
-  // Limit mode: counts on S. Layer mode: per face, and combined (SPEC §2.2).
-  StatusCount limit, plus_face, minus_face, combined;
+  StatusCount limit;   // limit mode: counts on S
+  LayerCounts counts;  // layer mode: per face, and combined (SPEC §2.2)
   MeshQuality layer_quality;  // layer mode only
   double meshing_time_s = 0;  // layer mode: building the layer-mode meshes from the limit ones
 };

@@ -205,7 +205,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
   for (size_t i = 0; i < paper.size(); ++i) {
     std::printf("%3d | %9s |", paper[i].row, counts_text(baseline[i]).c_str());
     for (const BarLayerScene& l : layer[i])
-      std::printf(" %-11s %-4d %8.1e |", counts_text(to_counts(l.combined)).c_str(), l.report.iterations,
+      std::printf(" %-11s %-4d %8.1e |", counts_text(to_counts(l.counts.combined)).c_str(), l.report.iterations,
                   l.report.residual.value());
     std::printf("\n");
     const BarLayerScene& thinnest = layer[i].back();
@@ -213,8 +213,8 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
     checks.push_back({row + ".layer_eps1e-4.converged", thinnest.report.converged,
                       "residual <= " + sci(fast_options.tolerance), sci(thinnest.report.residual.value()),
                       sci(fast_options.tolerance)});
-    checks.push_back({row + ".layer_eps1e-4.limit_counts", to_counts(thinnest.combined) == baseline[i],
-                      counts_text(baseline[i]), counts_text(to_counts(thinnest.combined)), "exact"});
+    checks.push_back({row + ".layer_eps1e-4.limit_counts", to_counts(thinnest.counts.combined) == baseline[i],
+                      counts_text(baseline[i]), counts_text(to_counts(thinnest.counts.combined)), "exact"});
   }
 
   // 3. Transitions along AD under refinement (nx = ny), default model otherwise.
