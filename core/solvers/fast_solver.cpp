@@ -195,14 +195,10 @@ void nsgs_sweeps(const Condensed& c, Eigen::VectorXd& r, int sweeps) {
     }
 }
 
-}  // namespace
-
-namespace {
-
 struct ActiveSetRun {
   int iterations = 0, nsgs_sweeps = 0;
   bool settled = false;   // the statuses reproduced themselves
-  bool singular = false;  // the last step had to take a minimum-norm solution
+  bool singular = false;  // the last step's system was singular (a floating body left free)
 };
 
 // Semismooth Newton / primal-dual active set from the given statuses and iterate.
@@ -243,7 +239,6 @@ ActiveSetRun active_set(const Condensed& c, const ContactProblem& problem, std::
     statuses = std::move(next);
   }
   run.iterations = std::min(run.iterations, max_iterations);
-  (void)problem;
   return run;
 }
 
@@ -283,7 +278,8 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
     auto true_residual = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& ww) {
       return contact_residual(problem, condensed.displacement(problem, rr, ww), rr).value();
     };
-    for (proximal_steps = 1; report.iterations < max_iterations; ++proximal_steps) {
+    while (report.iterations < max_iterations) {
+      ++proximal_steps;
       proximal.S = c.S;
       proximal.S.diagonal() += alpha * P;
       proximal.f_L = c.f_L + alpha * P.cwiseProduct(w);
@@ -294,8 +290,10 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
       run.singular = step.singular;
       if (true_residual(r, w) <= options.tolerance) break;
       if (step.settled) {
+        // Accepted on the true residual alone: a singular system (the layer's position not
+        // fixed) still has valid solutions, the minimum-norm one among them.
         const Step polish = solve_statuses(c, statuses);
-        if (!polish.singular && true_residual(polish.r, polish.w) <= options.tolerance) {
+        if (true_residual(polish.r, polish.w) <= options.tolerance) {
           r = polish.r;
           w = polish.w;
           break;
@@ -317,9 +315,7 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
   msg << (report.converged ? "converged" : "NOT converged") << " after " << report.iterations << " active-set steps"
       << (proximal_steps ? " in " + std::to_string(proximal_steps) + " proximal steps" : "")
       << (run.nsgs_sweeps ? " and " + std::to_string(run.nsgs_sweeps) + " NSGS sweeps" : "")
-      << (run.singular ? " (a floating body is not held by its contacts: its position is not unique; "
-                         "the one reported is the proximal iterate's, with forces unaffected)"
-                       : "")
+      << (run.singular ? " (a floating body is not held by its contacts: its position is not unique)" : "")
       << (!report.converged && run.settled && !proximal_steps
               ? " (statuses settled but the linear solve lost accuracy: ill-conditioned system)"
               : "")
