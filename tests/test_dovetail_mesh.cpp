@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -260,22 +259,17 @@ double slot_area() {
 }
 
 // Runs first (tests run in file order), so gmsh's initialisation is captured too.
-TEST(DovetailLimit, MeshingPrintsNothingAndIsFast) {
+// Meshing time is measured by the studies (meshing_time_s), not asserted here: these
+// machines are shared and noisy.
+TEST(DovetailLimit, MeshingPrintsNothing) {
   testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
-  const auto start = std::chrono::steady_clock::now();
   const dt::LimitMeshes meshes = dt::make_limit_meshes();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string out = testing::internal::GetCapturedStdout();
   const std::string err = testing::internal::GetCapturedStderr();
   EXPECT_EQ(out, "");
   EXPECT_EQ(err, "");
-  EXPECT_LT(seconds, 1.0);
-  std::printf("[dovetail] limit meshes at the default size: %.3f s, base %d nodes / %d Q1, "
-              "tenon %d nodes / %d Q1\n",
-              seconds, meshes.base.num_nodes(), meshes.base.num_cells(),
-              meshes.tenon.num_nodes(), meshes.tenon.num_cells());
+  EXPECT_GT(meshes.base.num_cells(), 0);
 }
 
 TEST(DovetailLimit, AllQ1PositiveAndAreas) {
@@ -369,10 +363,7 @@ TEST(DovetailLimit, InterfaceNodeCountsAtOtherSizes) {
   for (double h : {0.05, 0.0125}) {
     dt::MeshOptions options;
     options.h_interface = h;
-    const auto start = std::chrono::steady_clock::now();
     const dt::LimitMeshes m = dt::make_limit_meshes(options);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto segments = dt::interface_segments(h);
     EXPECT_EQ(static_cast<int>(m.base.node_set("S").size()), segments.nodes());
     EXPECT_EQ(m.base.node_set("S").size(), m.tenon.node_set("S").size());
@@ -381,9 +372,9 @@ TEST(DovetailLimit, InterfaceNodeCountsAtOtherSizes) {
     EXPECT_NEAR(total_area(m.base), 2.0 - slot_area(), 1e-12);
     EXPECT_NEAR(total_area(m.tenon), slot_area() + 0.4, 1e-12);
     std::printf("[dovetail] h_interface = %g: %d + %d + %d segments, %d nodes on S; "
-                "base %d Q1, tenon %d Q1; %.3f s\n",
+                "base %d Q1, tenon %d Q1\n",
                 h, segments.flank, segments.bottom, segments.flank, segments.nodes(),
-                m.base.num_cells(), m.tenon.num_cells(), seconds);
+                m.base.num_cells(), m.tenon.num_cells());
   }
   EXPECT_EQ(dt::interface_segments(0.05).nodes(), 45);
   EXPECT_EQ(dt::interface_segments(0.0125).nodes(), 185);
