@@ -48,6 +48,8 @@ Model make_layer_model(const MeshOptions& mesh, const LayerOptions& layer) {
     top.row(i) = bar.nodes.row(ad[i]);
     bottom.row(i) << bar.nodes(ad[i], 0), -layer.eps;
   }
+  // Fully integrated Q1 (see the dovetail's layer for the selective rule; here the full rule
+  // is the one with which every Table 3 row converges).
   Body body{"layer", layer_band(bottom, top, layer.layer_elements),
             Material{layer.lambda_eps, layer.mu_eps, mesh.plane}, true};
   model.bodies.push_back(std::move(body));

@@ -73,7 +73,11 @@ Model make_layer_model(const LayerMeshes& meshes, const Exponents& e) {
   const double mu_eps = std::pow(meshes.eps, x.delta) * mu_g;
   Model model;
   model.bodies.push_back({"base", meshes.base, Material{lambda_m, mu_m, PlaneHypothesis::Strain}});
-  model.bodies.push_back({"layer", meshes.layer, Material{lambda_eps, mu_eps, PlaneHypothesis::Strain}, true});
+  // The layer can be nearly incompressible (case (e): λ_ε/μ_ε = (λ_g/μ_g)/ε): selective
+  // integration keeps its Q1 elements from locking. Measured with `thinlayer study dovetail`:
+  // 44 of the 45 layer scenes converge with it, 42 with full integration. (The bar's layer
+  // keeps full integration: there all 18 scenes converge with it, one fewer without.)
+  model.bodies.push_back({"layer", meshes.layer, Material{lambda_eps, mu_eps, PlaneHypothesis::Strain}, true, true});
   model.bodies.push_back({"tenon", meshes.tenon, Material{lambda_m, mu_m, PlaneHypothesis::Strain}});
   add_supports(model, 0, 2);
   return model;

@@ -42,4 +42,13 @@ Matrix8d q1_stiffness(const Coords4& xy, const Eigen::Matrix3d& D) {
   return K;
 }
 
+Matrix8d q1_stiffness_selective(const Coords4& xy, const Eigen::Matrix3d& D_volumetric,
+                                const Eigen::Matrix3d& D_rest) {
+  Matrix8d K = q1_stiffness(xy, D_rest);
+  double detJ = 0;
+  const auto B = q1_strain_matrix(xy, 0.0, 0.0, detJ);
+  K += B.transpose() * D_volumetric * B * (4 * detJ);  // one point, weight 4
+  return K;
+}
+
 }  // namespace thinlayer

@@ -35,10 +35,21 @@ SparseMatrix assemble_stiffness(const Model& model) {
     const Body& body = model.bodies[b];
     const Eigen::Matrix3d D = body.material.D();
     const int offset = model.dof_offset(b);
-    if (body.mesh.element == ElementType::Q1)
+    if (body.mesh.element == ElementType::Q1 && body.selective_integration) {
+      // D = λ m mᵀ + (the μ part), m = (1, 1, 0); plane strain only.
+      if (body.material.plane != PlaneHypothesis::Strain)
+        throw std::invalid_argument("selective integration is implemented for plane strain only");
+      Eigen::Matrix3d D_volumetric = Eigen::Matrix3d::Zero();
+      D_volumetric.topLeftCorner<2, 2>().setConstant(body.material.lambda);
+      const Eigen::Matrix3d D_rest = D - D_volumetric;
+      add_cells<4>(body.mesh.quads, body.mesh, offset, D_volumetric,
+                   [&](const Coords4& xy, const Eigen::Matrix3d& Dv) { return q1_stiffness_selective(xy, Dv, D_rest); },
+                   triplets);
+    } else if (body.mesh.element == ElementType::Q1) {
       add_cells<4>(body.mesh.quads, body.mesh, offset, D, q1_stiffness, triplets);
-    else
+    } else {
       add_cells<3>(body.mesh.triangles, body.mesh, offset, D, p1_stiffness, triplets);
+    }
   }
   SparseMatrix K(model.num_dofs(), model.num_dofs());
   K.setFromTriplets(triplets.begin(), triplets.end());

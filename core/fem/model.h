@@ -19,6 +19,9 @@ struct Body {
   // A floating body has no support of its own: only its interfaces hold it (the thin layer).
   // Its stiffness is singular, so the solvers condense it separately and never factor it.
   bool floating = false;
+  // Q1 only: integrate the λ part of the stiffness at the element centre (selective reduced
+  // integration), for a nearly incompressible body such as some of the thin layers.
+  bool selective_integration = false;
 };
 
 // u_component = value on the listed nodes of one body. The name groups the reaction it
