@@ -122,21 +122,25 @@ Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
     }
   }
   const int nr = static_cast<int>(rows.size()), n = nr + nw;
-  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(m2, nr);
-  for (int j = 0; j < nr; ++j) {
-    Q(rows[j], j) = 1;
-    if (coupling[j].first >= 0) Q(coupling[j].first, j) = coupling[j].second;
-  }
-  const Eigen::MatrixXd WQ = c.W * Q;
+  // Column j of M Q is column rows[j] of M, plus the slide coupling times its T column.
+  auto times_Q = [&](const Eigen::MatrixXd& M, Eigen::Index first_row, Eigen::Index count, int j) {
+    Eigen::VectorXd col = M.col(rows[j]).segment(first_row, count);
+    if (coupling[j].first >= 0) col += coupling[j].second * M.col(coupling[j].first).segment(first_row, count);
+    return col;
+  };
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
-  for (int i = 0; i < nr; ++i) {  // d = 0 on the active rows: W Q x_r + B_L w = -g0
-    A.row(i).head(nr) = WQ.row(rows[i]);
+  for (int j = 0; j < nr; ++j) {  // d = 0 on the active rows: W Q x_r + B_L w = -g0
+    const Eigen::VectorXd WQ_j = times_Q(c.W, 0, m2, j);
+    for (int i = 0; i < nr; ++i) A(i, j) = WQ_j[rows[i]];
+  }
+  for (int i = 0; i < nr; ++i) {
     if (nw) A.row(i).tail(nw) = c.B_L.row(rows[i]);
     b[i] = -c.g0[rows[i]];
   }
   if (nw) {  // S w - B_Lᵀ Q x_r = f_L
-    A.bottomLeftCorner(nw, nr) = -c.B_L.transpose() * Q;
+    const Eigen::MatrixXd B_Lt = c.B_L.transpose();
+    for (int j = 0; j < nr; ++j) A.col(j).tail(nw) = -times_Q(B_Lt, 0, nw, j);
     A.bottomRightCorner(nw, nw) = c.S;
     b.tail(nw) = c.f_L;
   }
@@ -151,7 +155,11 @@ Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
     x = A.completeOrthogonalDecomposition().solve(b);
     step.singular = true;
   }
-  step.r = Q * x.head(nr);
+  step.r = Eigen::VectorXd::Zero(m2);
+  for (int j = 0; j < nr; ++j) {
+    step.r[rows[j]] += x[j];
+    if (coupling[j].first >= 0) step.r[coupling[j].first] += coupling[j].second * x[j];
+  }
   step.w = x.tail(nw);
   return step;
 }
