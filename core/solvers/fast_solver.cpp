@@ -123,15 +123,15 @@ Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
   }
   const int nr = static_cast<int>(rows.size()), n = nr + nw;
   // Column j of M Q is column rows[j] of M, plus the slide coupling times its T column.
-  auto times_Q = [&](const Eigen::MatrixXd& M, Eigen::Index first_row, Eigen::Index count, int j) {
-    Eigen::VectorXd col = M.col(rows[j]).segment(first_row, count);
-    if (coupling[j].first >= 0) col += coupling[j].second * M.col(coupling[j].first).segment(first_row, count);
+  auto times_Q = [&](const auto& M, int j) {
+    Eigen::VectorXd col = M.col(rows[j]);
+    if (coupling[j].first >= 0) col += coupling[j].second * M.col(coupling[j].first);
     return col;
   };
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
   for (int j = 0; j < nr; ++j) {  // d = 0 on the active rows: W Q x_r + B_L w = -g0
-    const Eigen::VectorXd WQ_j = times_Q(c.W, 0, m2, j);
+    const Eigen::VectorXd WQ_j = times_Q(c.W, j);
     for (int i = 0; i < nr; ++i) A(i, j) = WQ_j[rows[i]];
   }
   for (int i = 0; i < nr; ++i) {
@@ -139,8 +139,7 @@ Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
     b[i] = -c.g0[rows[i]];
   }
   if (nw) {  // S w - B_Lᵀ Q x_r = f_L
-    const Eigen::MatrixXd B_Lt = c.B_L.transpose();
-    for (int j = 0; j < nr; ++j) A.col(j).tail(nw) = -times_Q(B_Lt, 0, nw, j);
+    for (int j = 0; j < nr; ++j) A.col(j).tail(nw) = -times_Q(c.B_L.transpose(), j);
     A.bottomRightCorner(nw, nw) = c.S;
     b.tail(nw) = c.f_L;
   }
