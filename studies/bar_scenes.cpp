@@ -29,12 +29,11 @@ SolverKind parse_solver(const std::string& name) {
 
 const char* to_string(SolverKind s) { return s == SolverKind::Fast ? "fast" : "relaxation"; }
 
-std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_case, double scale, SolverKind solver) {
+std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_case, SolverKind solver) {
   std::ostringstream id;
   id << "bar-" << law_case << "-" << to_string(mesh.element);
   if (mesh.element == ElementType::P1) id << (mesh.diagonal == TriangleDiagonal::Right ? "R" : "L");
   id << "-" << mesh.nx << "x" << mesh.ny << "-plane_" << to_string(mesh.plane);
-  if (scale != 1) id << "-s" << scale;
   id << "-" << to_string(solver);
   return id.str();
 }
@@ -79,7 +78,7 @@ BarScene solve_bar(BarBulk& bulk, const InterfaceLaw& law, const std::string& la
   scene.report = run_solver(problem, condensed, solver, options);
   const bar::MeshOptions& mesh = bulk.mesh_options();
   SceneRecord& r = scene.record;
-  r = record_scene(bar_scene_id(mesh, law_case, 1.0, solver), bulk.model(), problem, scene.report, status_tolerance);
+  r = record_scene(bar_scene_id(mesh, law_case, solver), bulk.model(), problem, scene.report, status_tolerance);
   add_bar_attributes(r, mesh, "limit", law_case, law.lambda_bar, law.mu_bar, 0.0);
   r.numbers["friction"] = law.friction;
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
@@ -109,7 +108,7 @@ BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, d
   scene.layer_quality = mesh_quality(model.bodies[1].mesh);
   scene.report = run_solver(problem, condensed.get(), solver, options);
   std::ostringstream id;
-  id << bar_scene_id(mesh, law_case, 1.0, solver) << "-layer-eps" << eps;
+  id << bar_scene_id(mesh, law_case, solver) << "-layer-eps" << eps;
   SceneRecord& r = scene.record;
   r = record_scene(id.str(), model, problem, scene.report, status_tolerance);
   add_bar_attributes(r, mesh, "layer", law_case, lambda_bar, mu_bar, eps);

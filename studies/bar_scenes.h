@@ -49,7 +49,7 @@ struct BarScene {
 BarScene solve_bar(BarBulk& bulk, const InterfaceLaw& law, const std::string& law_case, SolverKind solver,
                    const SolverOptions& options, double status_tolerance = default_status_tolerance);
 
-std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_case, double scale, SolverKind solver);
+std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_case, SolverKind solver);
 
 // Thin-layer mode (SPEC §2.1): the layer under AD with λ_ε = eps λ̄, μ_ε = eps μ̄ and
 // Signorini-Coulomb on both faces. Counts per face and combined (gap if either face is open,

@@ -5,22 +5,11 @@
 #include <sstream>
 
 #include "studies/dovetail_scenes.h"
+#include "studies/format.h"
 
 namespace thinlayer {
 
 namespace {
-
-std::string counts(const StatusCount& c) {
-  std::ostringstream s;
-  s << c.gap << "/" << c.slide << "/" << c.stick;
-  return s.str();
-}
-
-std::string sci(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2e", x);
-  return buf;
-}
 
 // Statuses of S that differ between the combined layer statuses and the limit mode's.
 int status_differences(const SceneRecord& layer, const SceneRecord& limit) {
@@ -52,34 +41,34 @@ std::vector<Check> run_dovetail_study(const DovetailStudyOptions& options, H5Wri
     const dovetail::Exponents e = dovetail::exponents_of(c);
     const std::string name(1, c);
     const DovetailScene limit = solve_dovetail_limit(bulk, e, name, SolverKind::Fast, fast);
-    std::printf("%-4c %-7s | %-9s %-9s %-9s %4s | %5d %9s %8.4f %8.4f", c, "limit", "", "", counts(limit.limit).c_str(), "",
-                limit.report.iterations, sci(limit.report.residual.value()).c_str(), limit.report.wall_time_s,
+    std::printf("%-4c %-7s | %-9s %-9s %-9s %4s | %5d %9s %8.4f %8.4f", c, "limit", "", "", counts_text(limit.limit).c_str(), "",
+                limit.report.iterations, sci(limit.report.residual.value(), 2).c_str(), limit.report.wall_time_s,
                 limit.record.numbers.at("setup_time_s"));
     if (out) write_scene(*out, limit.record);
     checks.push_back({"dovetail." + name + ".limit.converged", limit.report.converged, "residual <= 1e-10",
-                      sci(limit.report.residual.value()), "1e-10"});
+                      sci(limit.report.residual.value(), 2), "1e-10"});
     if (options.relaxation_cap) {
       const DovetailScene r = solve_dovetail_limit(bulk, e, name, SolverKind::Relaxation, relaxation);
       std::printf(" | %s %6d %9s", r.report.converged ? "conv" : "CAP ", r.report.iterations,
-                  sci(r.report.residual.value()).c_str());
+                  sci(r.report.residual.value(), 2).c_str());
       if (out) write_scene(*out, r.record);
     }
     std::printf("\n");
     for (double eps : options.eps) {
       if (options.verbose) std::cerr << "[dovetail] case " << c << ", eps " << eps << "\n";
       const DovetailScene s = solve_dovetail_layer(bulk, e, eps, name, SolverKind::Fast, fast);
-      std::printf("%-4s %-7g | %-9s %-9s %-9s %4d | %5d %9s %8.4f %8.4f", "", eps, counts(s.counts.plus_face).c_str(),
-                  counts(s.counts.minus_face).c_str(), counts(s.counts.combined).c_str(),
+      std::printf("%-4s %-7g | %-9s %-9s %-9s %4d | %5d %9s %8.4f %8.4f", "", eps, counts_text(s.counts.plus_face).c_str(),
+                  counts_text(s.counts.minus_face).c_str(), counts_text(s.counts.combined).c_str(),
                   status_differences(s.record, limit.record), s.report.iterations,
-                  sci(s.report.residual.value()).c_str(), s.report.wall_time_s, s.record.numbers.at("setup_time_s"));
+                  sci(s.report.residual.value(), 2).c_str(), s.report.wall_time_s, s.record.numbers.at("setup_time_s"));
       if (out) write_scene(*out, s.record);
       std::ostringstream id;
       id << "dovetail." << c << ".layer_eps" << eps << ".converged";
-      checks.push_back({id.str(), s.report.converged, "residual <= 1e-10", sci(s.report.residual.value()), "1e-10"});
+      checks.push_back({id.str(), s.report.converged, "residual <= 1e-10", sci(s.report.residual.value(), 2), "1e-10"});
       if (options.relaxation_cap) {
         const DovetailScene r = solve_dovetail_layer(bulk, e, eps, name, SolverKind::Relaxation, relaxation);
         std::printf(" | %s %6d %9s", r.report.converged ? "conv" : "CAP ", r.report.iterations,
-                    sci(r.report.residual.value()).c_str());
+                    sci(r.report.residual.value(), 2).c_str());
         if (out) write_scene(*out, r.record);
       }
       std::printf("\n");

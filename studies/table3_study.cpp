@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "studies/bar_scenes.h"
+#include "studies/format.h"
 
 namespace thinlayer {
 
@@ -19,13 +20,6 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string counts_text(const StatusCounts& c) {
-  std::ostringstream s;
-  s << c.gap << "/" << c.slide << "/" << c.stick;
-  return s.str();
-}
-
-StatusCounts to_counts(const StatusCount& c) { return {c.gap, c.slide, c.stick}; }
 
 // Where the statuses change along AD, found as the zero of a quantity that changes sign
 // there, interpolated linearly between the two nodes that bracket it:
@@ -64,12 +58,6 @@ std::string paper_bracket(int nodes_before, double h) {
   return s.str();
 }
 
-std::string sci(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3e", x);
-  return buf;
-}
-
 std::string fmt_mm(double x) {
   if (std::isnan(x)) return "none";
   char buf[32];
@@ -94,8 +82,8 @@ struct Variant {
 
 // Counts over the 32 nodes the paper counts: with nx = 32 the 32 nodes of AD but D; with
 // nx = 31 the 31 contact nodes plus D, which is pinned: stick when pressed, gap otherwise.
-StatusCounts paper_comparable_counts(const BarScene& scene, int nx) {
-  StatusCounts c = to_counts(scene.counts);
+StatusCount paper_comparable_counts(const BarScene& scene, int nx) {
+  StatusCount c = scene.counts;
   if (nx == 31) {
     if (scene.record.reactions.at("D").y() > 0) ++c.stick;
     else ++c.gap;
@@ -113,7 +101,7 @@ std::vector<double> no_nan(std::vector<double> v) {
 
 struct RowRun {
   Table3Row paper;
-  StatusCounts baseline;
+  StatusCount baseline;
   BarScene fast, relaxation;
   double fast_time = 0, relaxation_time = 0, setup_time = 0, agreement = 0;
 };
@@ -168,8 +156,8 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
   for (const RowRun& r : runs) {
     std::printf("%3d %9.3g %11.3g | %9s %9s | %9s %4d %9.2e %9.2e | %9s %6d %9.2e %8.3f | %9.2e\n", r.paper.row,
                 r.paper.mu_bar, r.paper.lambda_bar, counts_text(r.paper.paper).c_str(), counts_text(r.baseline).c_str(),
-                counts_text(to_counts(r.fast.counts)).c_str(), r.fast.report.iterations, r.fast.report.residual.value(),
-                r.fast_time, counts_text(to_counts(r.relaxation.counts)).c_str(), r.relaxation.report.iterations,
+                counts_text(r.fast.counts).c_str(), r.fast.report.iterations, r.fast.report.residual.value(),
+                r.fast_time, counts_text(r.relaxation.counts).c_str(), r.relaxation.report.iterations,
                 r.relaxation.report.residual.value(), r.relaxation_time, r.agreement);
   }
   std::printf("\n(fast: + %.3f s once for the factorisation and condensation shared by all rows; |du|/|u|: relative\n"
@@ -177,10 +165,10 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
 
   for (const RowRun& r : runs) {
     const std::string row = "table3.row" + std::to_string(r.paper.row);
-    checks.push_back({row + ".fast.baseline", to_counts(r.fast.counts) == r.baseline, counts_text(r.baseline),
-                      counts_text(to_counts(r.fast.counts)), "exact"});
-    checks.push_back({row + ".relaxation.baseline", to_counts(r.relaxation.counts) == r.baseline,
-                      counts_text(r.baseline), counts_text(to_counts(r.relaxation.counts)), "exact"});
+    checks.push_back({row + ".fast.baseline", r.fast.counts == r.baseline, counts_text(r.baseline),
+                      counts_text(r.fast.counts), "exact"});
+    checks.push_back({row + ".relaxation.baseline", r.relaxation.counts == r.baseline,
+                      counts_text(r.baseline), counts_text(r.relaxation.counts), "exact"});
     checks.push_back({row + ".fast.converged", r.fast.report.converged, "residual <= " + sci(fast_options.tolerance),
                       sci(r.fast.report.residual.value()), sci(fast_options.tolerance)});
     checks.push_back({row + ".relaxation.converged", r.relaxation.report.converged,
@@ -205,7 +193,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
   for (size_t i = 0; i < paper.size(); ++i) {
     std::printf("%3d | %9s |", paper[i].row, counts_text(baseline[i]).c_str());
     for (const BarLayerScene& l : layer[i])
-      std::printf(" %-11s %-4d %8.1e |", counts_text(to_counts(l.counts.combined)).c_str(), l.report.iterations,
+      std::printf(" %-11s %-4d %8.1e |", counts_text(l.counts.combined).c_str(), l.report.iterations,
                   l.report.residual.value());
     std::printf("\n");
     const BarLayerScene& thinnest = layer[i].back();
@@ -213,8 +201,8 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
     checks.push_back({row + ".layer_eps1e-4.converged", thinnest.report.converged,
                       "residual <= " + sci(fast_options.tolerance), sci(thinnest.report.residual.value()),
                       sci(fast_options.tolerance)});
-    checks.push_back({row + ".layer_eps1e-4.limit_counts", to_counts(thinnest.counts.combined) == baseline[i],
-                      counts_text(baseline[i]), counts_text(to_counts(thinnest.counts.combined)), "exact"});
+    checks.push_back({row + ".layer_eps1e-4.limit_counts", thinnest.counts.combined == baseline[i],
+                      counts_text(baseline[i]), counts_text(thinnest.counts.combined), "exact"});
   }
 
   // 3. Transitions along AD under refinement (nx = ny), default model otherwise.
@@ -240,7 +228,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
       gc += fmt_mm(refined[n][i].gap_contact) + " ";
       ss += fmt_mm(refined[n][i].stick_slip) + " ";
     }
-    const StatusCounts& pc = paper[i].paper;
+    const StatusCount& pc = paper[i].paper;
     std::printf("%3d | %-26s %-13s | %-26s %-13s\n", paper[i].row, gc.c_str(), paper_bracket(pc.gap, h).c_str(),
                 ss.c_str(), pc.slide > 0 ? paper_bracket(pc.gap + pc.slide, h).c_str() : "none");
   }
@@ -249,7 +237,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
   struct SensitivityRow {
     Variant v;
     int row;
-    StatusCounts counts;
+    StatusCount counts;
     Transitions t;
     double residual;
     bool converged, matches;
@@ -267,7 +255,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
               for (const Table3Row& p : paper) {
                 const InterfaceLaw law = InterfaceLaw::make(scale * p.lambda_bar, scale * p.mu_bar, bar::friction);
                 const BarScene s = solve_bar(variant_bulk, law, "table3-row-" + std::to_string(p.row), SolverKind::Fast, fast_options);
-                const StatusCounts c = paper_comparable_counts(s, nx);
+                const StatusCount c = paper_comparable_counts(s, nx);
                 sensitivity.push_back({{plane, element, diagonal, nx, ny, scale}, p.row, c,
                                        transitions(s.record.interfaces.at(0), law), s.report.residual.value(),
                                        s.report.converged, c == p.paper});
@@ -286,8 +274,8 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
                       sci(fast_options.tolerance)});
     for (size_t i = 0; i < paper.size(); ++i) {
       const RowRun& r = runs[i];
-      const StatusCounts& pc = r.paper.paper;
-      const StatusCounts& bc = r.baseline;
+      const StatusCount& pc = r.paper.paper;
+      const StatusCount& bc = r.baseline;
       std::printf("row %d: paper %s, project %s", r.paper.row, counts_text(pc).c_str(), counts_text(bc).c_str());
       if (pc == bc) {
         std::printf(" -> identical.");

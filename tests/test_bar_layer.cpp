@@ -19,7 +19,7 @@ TEST(BarLayer, ThinLayerReproducesTheLimitCounts) {
     const BarLayerScene s = solve_bar_layer(bar::MeshOptions{}, paper[row - 1].lambda_bar, paper[row - 1].mu_bar, 1e-4,
                                             "table3-row-" + std::to_string(row), SolverKind::Fast, SolverOptions{});
     ASSERT_TRUE(s.report.converged) << s.report.message;
-    EXPECT_EQ((StatusCounts{s.counts.combined.gap, s.counts.combined.slide, s.counts.combined.stick}), baseline[row - 1]);
+    EXPECT_EQ((StatusCount{s.counts.combined.gap, s.counts.combined.slide, s.counts.combined.stick}), baseline[row - 1]);
     // The record has both faces and the combined statuses.
     ASSERT_EQ(s.record.interfaces.size(), 2u);
     EXPECT_EQ(s.record.interfaces[0].name, "S+");

@@ -212,7 +212,7 @@ TEST(Table3PaperFile, SixRowsOf32Nodes) {
 
 // SPEC §2.1's table, typed here: row, μ̄, λ̄, gap, slide, stick.
 TEST(Table3PaperFile, MatchesTheSpecTable) {
-  struct Expected { int row; double mu_bar, lambda_bar; StatusCounts counts; };
+  struct Expected { int row; double mu_bar, lambda_bar; StatusCount counts; };
   const std::vector<Expected> spec = {
       {1, 5.4e8, 4.5e8, {3, 16, 13}},  {2, 5.4e2, 4.5e8, {3, 14, 15}},
       {3, 5.4e2, 4.5e2, {3, 13, 16}},  {4, 5.4e-2, 4.5e8, {0, 0, 32}},
@@ -265,7 +265,7 @@ TEST(ReferenceDir, EnvironmentVariableOverridesTheDirectory) {
   EXPECT_EQ(rows[0].row, 7);
   EXPECT_EQ(rows[0].mu_bar, 1.25);
   EXPECT_EQ(rows[0].lambda_bar, 2.5);
-  EXPECT_EQ(rows[0].paper, (StatusCounts{1, 2, 3}));
+  EXPECT_EQ(rows[0].paper, (StatusCount{1, 2, 3}));
 }
 
 TEST(ReferenceDir, OverrideToAnEmptyDirectoryMakesLoadersThrow) {

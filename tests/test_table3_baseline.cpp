@@ -39,7 +39,7 @@ TEST(Table3Baseline, StatusesAreNotOnAKnifeEdge) {
     const InterfaceLaw law = InterfaceLaw::make(paper[i].lambda_bar, paper[i].mu_bar, bar::friction);
     for (double tol : {1e-4, 1e-8}) {
       const BarScene s = solve_bar(bulk, law, "row", SolverKind::Fast, SolverOptions{}, tol);
-      EXPECT_EQ((StatusCounts{s.counts.gap, s.counts.slide, s.counts.stick}), baseline[i])
+      EXPECT_EQ((StatusCount{s.counts.gap, s.counts.slide, s.counts.stick}), baseline[i])
           << "row " << paper[i].row << ", tolerance " << tol;
     }
   }

@@ -14,7 +14,7 @@ std::string reference_dir() {
 
 namespace {
 
-StatusCounts counts(const CsvTable& t, int i) {
+StatusCount counts(const CsvTable& t, int i) {
   return {t.integer(i, "gap"), t.integer(i, "slide"), t.integer(i, "stick")};
 }
 
@@ -34,9 +34,9 @@ std::vector<Table3Row> load_table3_paper(const std::string& dir) {
   return rows;
 }
 
-std::vector<StatusCounts> load_table3_baseline(const std::string& dir) {
+std::vector<StatusCount> load_table3_baseline(const std::string& dir) {
   const CsvTable t = CsvTable::read(dir + "/table3_baseline.csv");
-  std::vector<StatusCounts> rows;
+  std::vector<StatusCount> rows;
   for (int i = 0; i < t.rows(); ++i) {
     if (t.integer(i, "row") != i + 1) throw std::runtime_error(t.path() + ": rows must be 1, 2, ... in order");
     rows.push_back(counts(t, i));

@@ -4,24 +4,21 @@
 #include <string>
 #include <vector>
 
+#include "core/solvers/contact_problem.h"
+
 namespace thinlayer {
 
 std::string reference_dir();
 
-struct StatusCounts {
-  int gap = 0, slide = 0, stick = 0;
-  bool operator==(const StatusCounts&) const = default;
-};
-
 struct Table3Row {
   int row = 0;
   double mu_bar = 0, lambda_bar = 0;  // daN/mm³
-  StatusCounts paper;                 // the paper's counts (out of 32 nodes)
+  StatusCount paper;                 // the paper's counts (out of 32 nodes)
 };
 std::vector<Table3Row> load_table3_paper(const std::string& dir = reference_dir());
 
 // The project's converged counts for its default bar model (SPEC §2.1.1), per row.
-std::vector<StatusCounts> load_table3_baseline(const std::string& dir = reference_dir());
+std::vector<StatusCount> load_table3_baseline(const std::string& dir = reference_dir());
 
 struct Table1Row {
   char law_case = '?';

@@ -54,8 +54,7 @@ ContactProblem::ContactProblem(const LinearSystem& system, std::vector<Interface
       add_side(n.plus_dof_x, +1);
       if (!n.on_foundation()) add_side(n.minus_dof_x, -1);
 
-      const double K = row == 0 ? law.K_N() : law.K_T();
-      C_[2 * k + row] = 1.0 / (K * n.length);
+      C_[2 * k + row] = (row == 0 ? law.compliance_N() : law.compliance_T()) / n.length;
       double flexibility = 1.0 / nodal_stiffness(system, n.plus_dof_x, e[row]);
       if (!n.on_foundation()) flexibility += 1.0 / nodal_stiffness(system, n.minus_dof_x, e[row]);
       if (std::isfinite(C_[2 * k + row])) flexibility += C_[2 * k + row];

@@ -70,6 +70,7 @@ Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, c
 // |σ_N| ≤ tol · max|σ_N| over the interface, slide when |σ_T| ≥ (1 - tol) f |σ_N|.
 struct StatusCount {
   int gap = 0, slide = 0, stick = 0;
+  bool operator==(const StatusCount&) const = default;
 };
 std::vector<NodeStatus> classify_statuses(const std::vector<InterfaceLaw>& laws,
                                           const Eigen::VectorXd& sigma_N,

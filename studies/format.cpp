@@ -1,0 +1,17 @@
+#include "studies/format.h"
+
+#include <cstdio>
+
+namespace thinlayer {
+
+std::string counts_text(const StatusCount& c) {
+  return std::to_string(c.gap) + "/" + std::to_string(c.slide) + "/" + std::to_string(c.stick);
+}
+
+std::string sci(double x, int decimals) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*e", decimals, x);
+  return buf;
+}
+
+}  // namespace thinlayer

@@ -1,0 +1,14 @@
+#pragma once
+// Text forms shared by the studies' tables and checks.
+#include <string>
+
+#include "core/solvers/contact_problem.h"
+
+namespace thinlayer {
+
+// "gap/slide/stick", e.g. "3/14/15".
+std::string counts_text(const StatusCount& c);
+// Scientific notation with the given number of decimals, e.g. sci(1.5e-11, 2) = "1.50e-11".
+std::string sci(double x, int decimals = 3);
+
+}  // namespace thinlayer
