@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
 
 #include "core/io/reference_tables.h"
+#include "core/io/vtu_writer.h"
 #include "studies/args.h"
 #include "studies/bar_scenes.h"
 #include "studies/dovetail_scenes.h"
@@ -14,7 +16,7 @@
 
 namespace thinlayer {
 
-const char* const solve_help = R"(usage: thinlayer solve --case bar|dovetail [--mode limit|layer] [options] [--out FILE.h5]
+const char* const solve_help = R"(usage: thinlayer solve --case bar|dovetail [--mode limit|layer] [options] [--out FILE.h5] [--vtu FILE.vtu]
 
 Solves one scene and prints its gap/slide/stick counts, iterations, residual and times.
 
@@ -25,6 +27,8 @@ Solves one scene and prints its gap/slide/stick counts, iterations, residual and
   --layer-elements N   Q1 elements through the layer's thickness, >= 2 (default 2)
   --solver NAME        fast (default) | relaxation (the paper's algorithm)
   --out FILE.h5        write the scene (SPEC section 4 schema); nothing is written on error
+  --vtu FILE.vtu       write the scene for ParaView (mesh, displacement, interface fields on
+                       the nodes of S); nothing is written on error
 
 Bar:
   --row N              Table 3 row 1..6: (lambda_bar, mu_bar) from reference/table3_paper.csv
@@ -51,7 +55,7 @@ const std::set<std::string> bar_only = {"row", "lambda-bar", "mu-bar", "friction
 const std::set<std::string> dovetail_only = {"law-case", "gamma", "delta", "h-interface", "h-far"};
 
 struct SolveInput {
-  std::string case_name, mode, law_case, out;
+  std::string case_name, mode, law_case, out, vtu;
   SolverKind solver = SolverKind::Fast;
   SolverOptions options;
   double eps = 0;
@@ -105,7 +109,7 @@ void parse_dovetail(const Args& args, SolveInput& in) {
 }
 
 SolveInput parse_solve(const std::vector<std::string>& argv) {
-  std::set<std::string> valued = {"case", "mode", "solver", "out", "eps", "layer-elements"};
+  std::set<std::string> valued = {"case", "mode", "solver", "out", "vtu", "eps", "layer-elements"};
   valued.insert(mesh_and_solver_options.begin(), mesh_and_solver_options.end());
   valued.insert(bar_only.begin(), bar_only.end());
   valued.insert(dovetail_only.begin(), dovetail_only.end());
@@ -134,6 +138,11 @@ SolveInput parse_solve(const std::vector<std::string>& argv) {
   in.options = parse_solver_options(args);
   in.options.verbose = args.has("verbose");
   in.out = args.text("out", "");
+  in.vtu = args.text("vtu", "");
+  // absolute() first: weakly_canonical leaves a relative path with no existing prefix as it is.
+  auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
+  if (!in.out.empty() && !in.vtu.empty() && target(in.out) == target(in.vtu))
+    throw std::invalid_argument("--out and --vtu name the same file");
   if (in.case_name == "bar") parse_bar(args, in);
   else parse_dovetail(args, in);
   return in;
@@ -159,7 +168,7 @@ void print_layer(const MeshQuality& q, double eps, const LayerCounts& c) {
   print_counts("combined", c.combined);
 }
 
-// Solves the scene; returns its record (for --out) and report.
+// Solves the scene; returns its record (for --out and --vtu) and report.
 std::pair<SceneRecord, SolveReport> solve_scene(const SolveInput& in) {
   if (in.case_name == "bar") {
     std::printf("bar %s (lambda_bar %g, mu_bar %g; Table 1 case %c), %s %dx%d, plane %s, %s mode, solver %s\n",
@@ -213,11 +222,16 @@ int command_solve(const std::vector<std::string>& argv) {
     // Open the output first: an unwritable path is bad input, found before any work.
     std::unique_ptr<H5Writer> out;
     if (!in.out.empty()) out = std::make_unique<H5Writer>(in.out);
+    if (!in.vtu.empty()) check_vtu_target(in.vtu);
     const auto [record, report] = solve_scene(in);
     if (out) {
       write_scene(*out, record);
       out->commit();
       std::printf("  wrote %s\n", in.out.c_str());
+    }
+    if (!in.vtu.empty()) {
+      write_vtu(in.vtu, record);
+      std::printf("  wrote %s\n", in.vtu.c_str());
     }
     if (!report.converged) {
       std::cerr << "thinlayer solve: " << report.message << "\n";

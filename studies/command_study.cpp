@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -12,27 +14,42 @@
 #include "core/io/h5_writer.h"
 #include "studies/args.h"
 #include "studies/summary_json.h"
+#include "studies/convergence_study.h"
 #include "studies/dovetail_study.h"
+#include "studies/results_file.h"
 #include "studies/table3_study.h"
+#include "studies/thresholds_study.h"
+#include "studies/validity_study.h"
 
 namespace thinlayer {
 
 const char* const study_help = R"(usage: thinlayer study NAME [--out DIR] [options]
 
 Studies:
-  table3     S1: the bar's Table 3, both solvers, paper vs the project's baseline, the
-             sensitivity study, the transitions along AD under refinement, and the layer
-             mode at eps 1e-2, 1e-3, 1e-4
-  dovetail   the nine cases of Table 2 in limit mode and in layer mode at every eps
-             (SPEC 2.2): statuses per face and combined, iterations, residuals, times
+  table3       S1: the bar's Table 3, both solvers, paper vs the project's baseline, the
+               sensitivity study, the transitions along AD under refinement, and the layer
+               mode at eps 1e-2, 1e-3, 1e-4
+  dovetail     the nine cases of Table 2 in limit mode and in layer mode at every eps
+               (SPEC 2.2): statuses per face and combined, iterations, residuals, times
+  convergence  S2: distances between the layer and limit modes of the dovetail at every eps,
+               fitted rates against the predicted ones (studies/convergence_rates.md)
+  validity     S3 (runs S2 for its samples): the largest eps at which the limit law stays
+               within 1 % and 5 % of the layer model, by bisection on eps
+  thresholds   S4: the error of replacing a finite law by the 0 or inf law across the
+               paper's 3 % and 30x thresholds
+  asymptotics  S2, S3 and S4 together, sharing their scenes
 
 Options:
   --out DIR          write DIR/results.h5 (the scenes and the study's tables)
-  --repeats N        timing repetitions per solve, medians reported (default 3)
-  --quick            skip the sensitivity and refinement parts
+  --repeats N        table3: timing repetitions per solve, medians reported (default 3)
+  --quick            table3: skip the sensitivity and refinement parts
   --quiet            no progress lines on stderr
-  --cases LETTERS    dovetail: the cases to run (default abcdefghi)
-  --eps LIST         dovetail: comma-separated thicknesses (default 1e-2,5e-3,1e-3,5e-4,1e-4)
+  --cases LETTERS    dovetail studies: the cases to run (default abcdefghi)
+  --eps LIST         dovetail studies: comma-separated thicknesses (default 1e-2,5e-3,1e-3,5e-4,1e-4)
+  --tolerance T      S2/S3: the SPEC residual the scenes are solved to (default 1e-8; one scene
+                     is re-solved at 1e-10 to show the distances do not depend on it)
+  --threads N        S2/S3: layer-mode scenes solved in parallel (default 2)
+  --bisection-steps N  S3: bisection steps per bracket (default 2)
   --relaxation-cap N dovetail: also run the relaxation solver, capped at N sweeps
 
 Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input.
@@ -40,7 +57,7 @@ Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input
 
 const char* const verify_help = R"(usage: thinlayer verify --out DIR [--repeats N] [--quiet]
 
-Runs every study available (now: table3) and writes
+Runs the studies S1 (table3), S2-S4 (convergence, validity, thresholds) and writes
   DIR/results.h5     every scene and study table
   DIR/summary.json   every check: id, pass, expected, got, tolerance; and the timings
 Exit status: 0 only if every check passes; 1 if one fails; 2 on bad input.
@@ -53,21 +70,28 @@ struct StudyInput {
   std::string out_dir;
   Table3StudyOptions table3;
   DovetailStudyOptions dovetail;
+  ConvergenceStudyOptions convergence;
+  ValidityStudyOptions validity;
+  ThresholdsStudyOptions thresholds;
+  int threads = 2;
+  bool verbose = true;
 };
 
 StudyInput parse(const std::vector<std::string>& argv, bool require_out) {
-  const Args args(argv, {"out", "repeats", "cases", "eps", "relaxation-cap"}, {"quick", "quiet"});
+  const Args args(argv, {"out", "repeats", "cases", "eps", "relaxation-cap", "tolerance", "threads", "bisection-steps"},
+                  {"quick", "quiet"});
   StudyInput in;
   in.out_dir = args.text("out", "");
   if (require_out && in.out_dir.empty()) throw std::invalid_argument("--out DIR is required");
   in.table3.repeats = args.integer("repeats", 3);
   if (in.table3.repeats < 1) throw std::invalid_argument("--repeats must be >= 1");
   if (args.has("quick")) in.table3.sensitivity = in.table3.refinement = false;
-  in.table3.verbose = !args.has("quiet");
-  in.dovetail.verbose = !args.has("quiet");
+  in.verbose = !args.has("quiet");
+  in.table3.verbose = in.dovetail.verbose = in.verbose;
   in.dovetail.cases = args.text("cases", in.dovetail.cases);
   for (char c : in.dovetail.cases)
     if (c < 'a' || c > 'i') throw std::invalid_argument("--cases: unknown case '" + std::string(1, c) + "' (expected a..i)");
+  if (in.dovetail.cases.empty()) throw std::invalid_argument("--cases: give at least one case");
   if (args.has("eps")) {
     in.dovetail.eps.clear();
     std::stringstream list(args.text("eps", ""));
@@ -79,16 +103,38 @@ StudyInput parse(const std::vector<std::string>& argv, bool require_out) {
   }
   in.dovetail.relaxation_cap = args.integer("relaxation-cap", 0);
   if (in.dovetail.relaxation_cap < 0) throw std::invalid_argument("--relaxation-cap must be >= 0");
+  in.convergence.cases = in.dovetail.cases;
+  in.convergence.eps = in.dovetail.eps;
+  in.convergence.tolerance = args.number("tolerance", in.convergence.tolerance);
+  if (!(in.convergence.tolerance > 0) || !(in.convergence.tolerance < 1))
+    throw std::invalid_argument("--tolerance must be in (0, 1)");
+  in.threads = args.integer("threads", 2);
+  if (in.threads < 1 || in.threads > 64) throw std::invalid_argument("--threads must be in 1..64");
+  in.validity.bisection_steps = args.integer("bisection-steps", 2);
+  if (in.validity.bisection_steps < 0 || in.validity.bisection_steps > 20)
+    throw std::invalid_argument("--bisection-steps must be in 0..20");
   return in;
 }
 
-// Creates DIR if needed and opens DIR/results.h5 (written on commit only).
-std::unique_ptr<H5Writer> open_results(const std::string& dir) {
-  if (dir.empty()) return nullptr;
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error("cannot create output directory '" + dir + "': " + ec.message());
-  return std::make_unique<H5Writer>(dir + "/results.h5");
+// S2, S3 and S4 as asked: they share one limit-mode bulk and one scene cache.
+std::vector<Check> run_asymptotic_studies(const StudyInput& in, bool s2, bool s3, bool s4, H5Writer* out) {
+  std::vector<Check> checks;
+  DovetailLimitBulk bulk;
+  if (s2 || s3) {
+    if (in.convergence.eps.size() < 3) throw std::invalid_argument("--eps: the convergence study needs at least 3 thicknesses");
+    DovetailSceneCache cache(bulk, in.threads, in.verbose, "convergence");
+    const ConvergenceResult samples = run_convergence_study(in.convergence, cache, out);
+    checks = samples.checks;
+    if (s3) run_validity_study(in.validity, samples, in.convergence, cache, out, checks);
+    std::printf("\n(%d scenes solved, %d requests answered from memory; %.1f s of solving over %d threads)\n",
+                cache.solves(), cache.reuses(), cache.solve_time_s(), in.threads);
+    if (out) cache.write(*out);
+  }
+  if (s4) {
+    if (in.verbose) std::cerr << "[thresholds] limit-mode sweeps\n";
+    run_thresholds_study(in.thresholds, bulk, out, checks);
+  }
+  return checks;
 }
 
 int report_checks(const std::vector<Check>& checks) {
@@ -105,25 +151,38 @@ int report_checks(const std::vector<Check>& checks) {
 }  // namespace
 
 int command_study(const std::vector<std::string>& argv) {
+  static const std::vector<std::string> names = {"table3", "dovetail", "convergence", "validity", "thresholds",
+                                                 "asymptotics"};
   StudyInput in;
   std::string name;
   try {
-    if (argv.empty() || argv[0].rfind("--", 0) == 0) throw std::invalid_argument("which study? (table3 or dovetail)");
+    if (argv.empty() || argv[0].rfind("--", 0) == 0)
+      throw std::invalid_argument("which study? (table3, dovetail, convergence, validity, thresholds or asymptotics)");
     name = argv[0];
-    if (name != "table3" && name != "dovetail")
-      throw std::invalid_argument("unknown study '" + name + "' (expected table3 or dovetail)");
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      throw std::invalid_argument("unknown study '" + name +
+                                  "' (expected table3, dovetail, convergence, validity, thresholds or asymptotics)");
     in = parse(std::vector<std::string>(argv.begin() + 1, argv.end()), false);
   } catch (const std::exception& e) {
     std::cerr << "thinlayer study: " << e.what() << "\n";
     return 2;
   }
   try {
+    const auto start = std::chrono::steady_clock::now();
     auto out = open_results(in.out_dir);
-    const auto checks = name == "table3" ? run_table3_study(in.table3, out.get())
-                                         : run_dovetail_study(in.dovetail, out.get());
+    std::vector<Check> checks;
+    if (name == "table3") checks = run_table3_study(in.table3, out.get());
+    else if (name == "dovetail") checks = run_dovetail_study(in.dovetail, out.get());
+    else
+      checks = run_asymptotic_studies(in, name == "convergence" || name == "validity" || name == "asymptotics",
+                                      name == "validity" || name == "asymptotics",
+                                      name == "thresholds" || name == "asymptotics", out.get());
+    std::printf("\nstudy %s: %.1f s wall time\n", name.c_str(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (out) {
+      write_checks(*out, checks);
       out->commit();
-      std::printf("\nwrote %s\n", out->path().c_str());
+      std::printf("wrote %s\n", out->path().c_str());
     }
     return report_checks(checks);
   } catch (const std::exception& e) {
@@ -143,10 +202,17 @@ int command_verify(const std::vector<std::string>& argv) {
   try {
     auto out = open_results(in.out_dir);
     std::map<std::string, double> timings;
-    const auto start = std::chrono::steady_clock::now();
-    std::cerr << "[verify] study table3\n";
-    const auto checks = run_table3_study(in.table3, out.get());
-    timings["table3_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::vector<Check> checks;
+    auto timed = [&](const std::string& name, const std::function<std::vector<Check>()>& study) {
+      std::cerr << "[verify] study " << name << "\n";
+      const auto start = std::chrono::steady_clock::now();
+      const std::vector<Check> c = study();
+      checks.insert(checks.end(), c.begin(), c.end());
+      timings[name + "_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    timed("table3", [&] { return run_table3_study(in.table3, out.get()); });
+    timed("asymptotics", [&] { return run_asymptotic_studies(in, true, true, true, out.get()); });
+    write_checks(*out, checks);
     out->commit();
     const std::string summary = in.out_dir + "/summary.json";
     const std::string tmp = summary + ".tmp";

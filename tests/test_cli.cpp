@@ -207,3 +207,45 @@ TEST_F(Cli, RelaxationSolveReportsNonConvergenceWithExitStatus1) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, StudyBadInputGivesOneLineErrorAndNoFile) {
+  const std::string out = " --out " + (dir / "study").string();
+  for (const char* args : {"study nosuchstudy", "study convergence --cases z", "study convergence --cases ''",
+                           "study validity --eps 1e-2,nan", "study convergence --eps 1e-2,0", "study convergence --tolerance 0",
+                           "study convergence --threads 0", "study validity --bisection-steps -1",
+                           "study convergence --eps 1e-2,1e-3"}) {
+    SCOPED_TRACE(args);
+    const CliRun r = run(std::string(args) + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("thinlayer study: "), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "study" / "results.h5"));
+  }
+}
+
+TEST_F(Cli, ThresholdsStudyWritesItsTablesChecksAndEnvironment) {
+  const CliRun r = run("study thresholds --quiet --out " + (dir / "s4").string());
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("Classification thresholds"), std::string::npos);
+  const thinlayer::H5Reader f((dir / "s4" / "results.h5").string());
+  EXPECT_EQ(f.attr_string("/", "layout"), "thinlayer-results");
+  EXPECT_EQ(f.attr_int("/", "layout_version"), 1);
+  EXPECT_FALSE(f.attr_string("/environment", "eigen").empty());
+  for (const char* d : {"/studies/thresholds/lambda/ratio", "/studies/thresholds/mu/error_zero",
+                        "/studies/thresholds/crossings/ratio", "/checks/id", "/checks/pass"})
+    EXPECT_TRUE(f.exists(d)) << d;
+  const auto pass = f.read_ints("/checks/pass");
+  ASSERT_FALSE(pass.empty());
+  for (long long p : pass) EXPECT_EQ(p, 1);
+  // Eight crossings per quantity (2 parameters × 2 laws × 2 tolerances), each with a ratio in the swept range.
+  const auto ratio = f.read_doubles("/studies/thresholds/crossings/ratio");
+  EXPECT_EQ(ratio.size(), 16u);
+  for (double x : ratio) {
+    EXPECT_GE(x, 1e-4);
+    EXPECT_LE(x, 1e4);
+  }
+}
+
+}  // namespace

@@ -58,4 +58,13 @@ std::vector<Table2Row> load_table2(const std::string& dir) {
   return rows;
 }
 
+std::vector<PredictedRate> load_predicted_rates(const std::string& dir) {
+  const CsvTable t = CsvTable::read(dir + "/predicted_rates.csv");
+  std::vector<PredictedRate> rows;
+  for (int i = 0; i < t.rows(); ++i)
+    rows.push_back({law_case(t, i), t.number(i, "gamma"), t.number(i, "delta"), t.number(i, "p_predicted"),
+                    t.text(i, "dominant_term")});
+  return rows;
+}
+
 }  // namespace thinlayer

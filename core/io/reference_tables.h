@@ -32,4 +32,13 @@ struct Table2Row {
 };
 std::vector<Table2Row> load_table2(const std::string& dir = reference_dir());
 
+// The project's predicted convergence rate of each dovetail case (study S2), derived by hand
+// in studies/convergence_rates.md.
+struct PredictedRate {
+  char law_case = '?';
+  double gamma = 0, delta = 0, p = 0;
+  std::string dominant_term;
+};
+std::vector<PredictedRate> load_predicted_rates(const std::string& dir = reference_dir());
+
 }  // namespace thinlayer

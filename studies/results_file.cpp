@@ -1,0 +1,40 @@
+#include "studies/results_file.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "studies/environment.h"
+
+namespace thinlayer {
+
+std::unique_ptr<H5Writer> open_results(const std::string& dir) {
+  if (dir.empty()) return nullptr;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create output directory '" + dir + "': " + ec.message());
+  auto out = std::make_unique<H5Writer>(dir + "/results.h5");
+  out->attr("/", "layout", std::string(results_layout));
+  out->attr("/", "layout_version", results_layout_version);
+  write_environment(*out);
+  return out;
+}
+
+void write_checks(H5Writer& out, const std::vector<Check>& checks) {
+  std::vector<std::string> id, expected, got, tolerance;
+  std::vector<int> pass;
+  for (const Check& c : checks) {
+    id.push_back(c.id);
+    pass.push_back(c.pass ? 1 : 0);
+    expected.push_back(c.expected);
+    got.push_back(c.got);
+    tolerance.push_back(c.tolerance);
+  }
+  if (checks.empty()) return;
+  out.dataset("/checks/id", id);
+  out.dataset("/checks/pass", pass);
+  out.dataset("/checks/expected", expected);
+  out.dataset("/checks/got", got);
+  out.dataset("/checks/tolerance", tolerance);
+}
+
+}  // namespace thinlayer

@@ -1,0 +1,200 @@
+#include "studies/thresholds_study.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#include "core/solvers/fast_solver.h"
+#include "studies/bisection.h"
+#include "studies/error_norms.h"
+#include "studies/format.h"
+
+namespace thinlayer {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+const double U = std::hypot(dovetail::pull_x, dovetail::pull_y);  // mm
+
+struct Sweep {
+  std::string param;  // "lambda" | "mu"
+  double reference;   // λ_m/L or μ_m/L, daN/mm³
+  // The law with the swept parameter set to `value` (0, finite or ∞), the other held.
+  std::function<InterfaceLaw(double)> law;
+};
+
+const double sigma_ref = dovetail::mu_m * U / 1.0;                // daN/mm², L = 1
+
+// What a replacement changes: the adherents' displacements, and the stress vector on S.
+struct Response {
+  Eigen::VectorXd u;      // free DOFs, mm
+  Eigen::VectorXd sigma;  // (σ_N, σ_T) per S node, daN/mm²
+};
+
+class Solver {
+ public:
+  Solver(DovetailLimitBulk& bulk, double tolerance) : bulk_(bulk) {
+    options_.tolerance = tolerance;
+    const Interface S = dovetail::make_limit_interface(bulk_.model(), InterfaceLaw{});
+    weights_.resize(2 * S.nodes.size());
+    for (size_t k = 0; k < S.nodes.size(); ++k) weights_[2 * k] = weights_[2 * k + 1] = S.nodes[k].length;
+  }
+  // Counts the solves that did not converge.
+  Response solve(const InterfaceLaw& law) {
+    const ContactProblem problem(bulk_.system(), {dovetail::make_limit_interface(bulk_.model(), law)});
+    const SolveReport r = solve_fast(problem, bulk_.condensed(), options_);
+    ++solves_;
+    if (!r.converged) ++failures_;
+    return {r.u, r.r.cwiseQuotient(weights_)};
+  }
+  // The error of `replaced` against `finite` in one quantity: "u" or "sigma".
+  double error(const std::string& quantity, const Response& finite, const Response& replaced) const {
+    if (quantity == "u") return relative_distance(replaced.u, finite.u, Eigen::VectorXd::Ones(finite.u.size()), U);
+    return relative_distance(replaced.sigma, finite.sigma, weights_, sigma_ref);
+  }
+  int solves() const { return solves_; }
+  int failures() const { return failures_; }
+
+ private:
+  DovetailLimitBulk& bulk_;
+  SolverOptions options_;
+  Eigen::VectorXd weights_;  // tributary length of each row of S, mm
+  int solves_ = 0, failures_ = 0;
+};
+
+}  // namespace
+
+std::vector<ThresholdCrossing> run_thresholds_study(const ThresholdsStudyOptions& options, DovetailLimitBulk& bulk,
+                                                    H5Writer* out, std::vector<Check>& checks) {
+  if (!(options.ratio_min > 0) || !(options.ratio_max > options.ratio_min) || options.points_per_decade < 1)
+    throw std::invalid_argument("thresholds: need 0 < ratio_min < ratio_max and points_per_decade >= 1");
+  const double f = dovetail::friction;
+  const std::vector<Sweep> sweeps = {
+      {"lambda", dovetail::lambda_m, [f](double v) { return InterfaceLaw::make(v, dovetail::mu_m, f); }},
+      {"mu", dovetail::mu_m, [f](double v) { return InterfaceLaw::make(dovetail::lambda_m, v, f); }}};
+  Solver solver(bulk, options.tolerance);
+  const std::vector<std::string> quantities = {"sigma", "u"};
+  const int n = static_cast<int>(std::round(std::log10(options.ratio_max / options.ratio_min) * options.points_per_decade));
+
+  std::printf("\nClassification thresholds (S4, paper 3.3): error of replacing the finite law by the 0 or inf law,\n"
+              "relative distances of the stress vector on S ('sigma', scale mu_m U/L) and of the adherents' displacements\n"
+              "('u', scale U) (dovetail, limit mode); ratio = lambda_bar/(lambda_m/L)\n"
+              "with mu_bar = mu_m/L, or mu_bar/(mu_m/L) with lambda_bar = lambda_m/L; paper: 0 below %g, inf above %g\n\n",
+              options.threshold_low, options.threshold_high);
+  std::vector<ThresholdCrossing> crossings;
+  for (const Sweep& s : sweeps) {
+    const Response zero_law = solver.solve(s.law(0.0)), inf_law = solver.solve(s.law(inf));
+    const auto finite = [&](double ratio) { return solver.solve(s.law(ratio * s.reference)); };
+    std::vector<double> ratio;
+    std::map<std::string, std::vector<double>> e_zero, e_inf;  // per quantity
+    for (int i = 0; i <= n; ++i) {
+      ratio.push_back(options.ratio_min * std::pow(10.0, static_cast<double>(i) / options.points_per_decade));
+      const Response r = finite(ratio.back());
+      for (const std::string& q : quantities) {
+        e_zero[q].push_back(solver.error(q, r, zero_law));
+        e_inf[q].push_back(solver.error(q, r, inf_law));
+      }
+    }
+    for (const std::string& q : quantities)
+      for (const char* law : {"0", "inf"}) {
+        const bool zero = std::string(law) == "0";
+        const Response& replaced = zero ? zero_law : inf_law;
+        const double threshold = zero ? options.threshold_low : options.threshold_high;
+        const double at_threshold = solver.error(q, finite(threshold), replaced);
+        // As a function of x = ρ (0 law) or x = 1/ρ (∞ law) the error grows with x: the crossing
+        // is the largest x with error ≤ τ.
+        auto e_of_x = [&](double x) { return solver.error(q, finite(zero ? x : 1 / x), replaced); };
+        const std::vector<double>& e_sweep = zero ? e_zero[q] : e_inf[q];
+        for (double tau : options.taus) {
+          ThresholdCrossing c{s.param, law, q, tau, "", 0.0, at_threshold, at_threshold <= tau};
+          int within = -1;  // the largest sampled x within τ, scanning x upwards
+          for (int i = 0; i <= n; ++i) {
+            const int k = zero ? i : n - i;
+            if (e_sweep[k] <= tau) within = k;
+            else break;
+          }
+          if (within < 0) {
+            c.status = "never";
+            c.ratio = zero ? ratio.front() : ratio.back();
+          } else if (within == (zero ? n : 0)) {
+            c.status = "always";
+            c.ratio = zero ? ratio.back() : ratio.front();
+          } else {
+            const int beyond = zero ? within + 1 : within - 1;
+            auto x = [&](int k) { return zero ? ratio[k] : 1 / ratio[k]; };
+            const Bracket b = bisect_log(e_of_x, {x(within), e_sweep[within], x(beyond), e_sweep[beyond]}, tau,
+                                         options.bisection_steps);
+            c.status = "found";
+            c.ratio = zero ? b.eps_within : 1 / b.eps_within;
+          }
+          crossings.push_back(c);
+        }
+      }
+    if (out) {
+      const std::string g = "/studies/thresholds/" + s.param;
+      out->dataset(g + "/ratio", ratio);
+      out->dataset(g + "/error_zero", e_zero[options.quantity]);
+      out->dataset(g + "/error_inf", e_inf[options.quantity]);
+      for (const std::string& q : quantities) {
+        out->dataset(g + "/error_zero_" + q, e_zero[q]);
+        out->dataset(g + "/error_inf_" + q, e_inf[q]);
+      }
+      out->attr(g, "quantity", options.quantity);
+      out->attr(g, "fixed_other", s.param == "lambda" ? std::string("mu_bar = mu_m/L = 5400 daN/mm^3")
+                                                      : std::string("lambda_bar = lambda_m/L = 4500 daN/mm^3"));
+    }
+  }
+
+  std::printf("%-7s %-4s %-6s %-5s | %-8s %-10s | %-22s %s\n", "param", "law", "error", "tau", "status", "crossing",
+              "error at paper's threshold", "confirmed");
+  for (const ThresholdCrossing& c : crossings)
+    std::printf("%-7s %-4s %-6s %-5g | %-8s %-10s | %-8s at %-12g %s\n", c.param.c_str(), c.law.c_str(), c.quantity.c_str(), c.tau,
+                c.status.c_str(), sci(c.ratio, 2).c_str(), sci(c.error_at_threshold, 2).c_str(),
+                c.law == "0" ? options.threshold_low : options.threshold_high, c.confirmed ? "yes" : "no");
+  std::printf("(%d limit-mode solves, %d not converged)\n", solver.solves(), solver.failures());
+  checks.push_back({"thresholds.solves_converged", solver.failures() == 0,
+                    "every solve at residual <= " + sci(options.tolerance, 0), std::to_string(solver.failures()) + " of " +
+                    std::to_string(solver.solves()) + " did not converge", sci(options.tolerance, 0)});
+
+  if (out) {
+    const std::string g = "/studies/thresholds/crossings";
+    std::vector<std::string> param, law, status, quantity;
+    std::vector<double> tau, ratio, at;
+    std::vector<int> confirmed;
+    std::string summary;
+    for (const ThresholdCrossing& c : crossings) {
+      param.push_back(c.param);
+      law.push_back(c.law);
+      quantity.push_back(c.quantity);
+      status.push_back(c.status);
+      tau.push_back(c.tau);
+      ratio.push_back(c.ratio);
+      at.push_back(c.error_at_threshold);
+      confirmed.push_back(c.confirmed);
+      if (c.quantity != options.quantity) continue;
+      char line[160];
+      std::snprintf(line, sizeof line, "%s%s %s-law at tau %g: %s", summary.empty() ? "" : "; ", c.param.c_str(),
+                    c.law.c_str(), c.tau, c.confirmed ? "confirmed" : "not confirmed");
+      summary += line;
+    }
+    out->dataset(g + "/param", param);
+    out->dataset(g + "/law", law);
+    out->dataset(g + "/quantity", quantity);
+    out->dataset(g + "/tau", tau);
+    out->dataset(g + "/ratio", ratio);
+    out->dataset(g + "/status", status);
+    out->dataset(g + "/error_at_threshold", at);
+    out->dataset(g + "/confirmed", confirmed);
+    out->attr("/studies/thresholds", "threshold_low", options.threshold_low);
+    out->attr("/studies/thresholds", "threshold_high", options.threshold_high);
+    out->attr("/studies/thresholds", "confirmed", summary);
+    out->attr("/studies/thresholds/crossings", "threshold_low", options.threshold_low);
+    out->attr("/studies/thresholds/crossings", "threshold_high", options.threshold_high);
+    out->attr("/studies/thresholds/crossings", "confirmed", summary);
+  }
+  return crossings;
+}
+
+}  // namespace thinlayer
