@@ -16,9 +16,11 @@
 #include "studies/summary_json.h"
 #include "studies/convergence_study.h"
 #include "studies/dovetail_study.h"
+#include "studies/report_runner.h"
 #include "studies/results_file.h"
 #include "studies/table3_study.h"
 #include "studies/thresholds_study.h"
+#include "studies/timing_study.h"
 #include "studies/validity_study.h"
 
 namespace thinlayer {
@@ -38,16 +40,18 @@ Studies:
   thresholds   S4: the error of replacing a finite law by the 0 or inf law across the
                paper's 3 % and 30x thresholds
   asymptotics  S2, S3 and S4 together, sharing their scenes
+  timing       S5, quick version: wall time against error for the fast solver and the
+               relaxation on the bar at several mesh levels, and the ratio to one linear solve
 
 Options:
   --out DIR          write DIR/results.h5 (the scenes and the study's tables)
-  --repeats N        table3: timing repetitions per solve, medians reported (default 3)
+  --repeats N        table3, timing: repetitions per timed solve, medians reported (default 3)
   --quick            table3: skip the sensitivity and refinement parts
   --quiet            no progress lines on stderr
   --cases LETTERS    dovetail studies: the cases to run (default abcdefghi)
   --eps LIST         dovetail studies: comma-separated thicknesses (default 1e-2,5e-3,1e-3,5e-4,1e-4)
-  --tolerance T      S2/S3: the SPEC residual the scenes are solved to (default 1e-8; one scene
-                     is re-solved at 1e-10 to show the distances do not depend on it)
+  --tolerance T      S2/S3: the SPEC residual the scenes are solved to (default 1e-8; case d is
+                     re-solved at 1e-10 to show the distances do not depend on it)
   --threads N        S2/S3: layer-mode scenes solved in parallel (default 2)
   --bisection-steps N  S3: bisection steps per bracket (default 2)
   --relaxation-cap N dovetail: also run the relaxation solver, capped at N sweeps
@@ -57,11 +61,15 @@ Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input
 
 const char* const verify_help = R"(usage: thinlayer verify --out DIR [--repeats N] [--quiet]
 
-Runs the studies S1 (table3), S2-S4 (convergence, validity, thresholds) and writes
-  DIR/results.h5     every scene and study table
-  DIR/summary.json   every check: id, pass, expected, got, tolerance; and the timings
-Exit status: 0 only if every check passes; 1 if one fails; 2 on bad input.
-(The HTML report comes with the verification-report work.)
+Runs the studies S1 (table3), S2-S4 (convergence, validity, thresholds), S5 quick (timing)
+and writes
+  DIR/results.h5           every scene, study table and check, the environment
+  DIR/summary.json         every check: id, pass, expected, got, tolerance; and the timings
+  DIR/report/index.html    the report, with its figures (made from results.h5 alone:
+                           /usr/bin/python3 report/make_report.py DIR/results.h5 DIR/report)
+Options: those of `thinlayer study` (e.g. --quick, --cases, --eps, --tolerance, --threads).
+Exit status: 0 only if every check passes; 1 if one fails; 2 on bad input or a failure to
+write an output.
 )";
 
 namespace {
@@ -73,6 +81,7 @@ struct StudyInput {
   ConvergenceStudyOptions convergence;
   ValidityStudyOptions validity;
   ThresholdsStudyOptions thresholds;
+  TimingStudyOptions timing;
   int threads = 2;
   bool verbose = true;
 };
@@ -85,6 +94,7 @@ StudyInput parse(const std::vector<std::string>& argv, bool require_out) {
   if (require_out && in.out_dir.empty()) throw std::invalid_argument("--out DIR is required");
   in.table3.repeats = args.integer("repeats", 3);
   if (in.table3.repeats < 1) throw std::invalid_argument("--repeats must be >= 1");
+  in.timing.repeats = in.table3.repeats;
   if (args.has("quick")) in.table3.sensitivity = in.table3.refinement = false;
   in.verbose = !args.has("quiet");
   in.table3.verbose = in.dovetail.verbose = in.verbose;
@@ -151,17 +161,17 @@ int report_checks(const std::vector<Check>& checks) {
 }  // namespace
 
 int command_study(const std::vector<std::string>& argv) {
-  static const std::vector<std::string> names = {"table3", "dovetail", "convergence", "validity", "thresholds",
-                                                 "asymptotics"};
+  static const std::vector<std::string> names = {"table3",     "dovetail",    "convergence", "validity",
+                                                 "thresholds", "asymptotics", "timing"};
   StudyInput in;
   std::string name;
   try {
     if (argv.empty() || argv[0].rfind("--", 0) == 0)
-      throw std::invalid_argument("which study? (table3, dovetail, convergence, validity, thresholds or asymptotics)");
+      throw std::invalid_argument("which study? (table3, dovetail, convergence, validity, thresholds, asymptotics or timing)");
     name = argv[0];
     if (std::find(names.begin(), names.end(), name) == names.end())
       throw std::invalid_argument("unknown study '" + name +
-                                  "' (expected table3, dovetail, convergence, validity, thresholds or asymptotics)");
+                                  "' (expected table3, dovetail, convergence, validity, thresholds, asymptotics or timing)");
     in = parse(std::vector<std::string>(argv.begin() + 1, argv.end()), false);
   } catch (const std::exception& e) {
     std::cerr << "thinlayer study: " << e.what() << "\n";
@@ -173,6 +183,7 @@ int command_study(const std::vector<std::string>& argv) {
     std::vector<Check> checks;
     if (name == "table3") checks = run_table3_study(in.table3, out.get());
     else if (name == "dovetail") checks = run_dovetail_study(in.dovetail, out.get());
+    else if (name == "timing") checks = run_timing_study(in.timing, out.get());
     else
       checks = run_asymptotic_studies(in, name == "convergence" || name == "validity" || name == "asymptotics",
                                       name == "validity" || name == "asymptotics",
@@ -212,6 +223,7 @@ int command_verify(const std::vector<std::string>& argv) {
     };
     timed("table3", [&] { return run_table3_study(in.table3, out.get()); });
     timed("asymptotics", [&] { return run_asymptotic_studies(in, true, true, true, out.get()); });
+    timed("timing", [&] { return run_timing_study(in.timing, out.get()); });
     write_checks(*out, checks);
     out->commit();
     const std::string summary = in.out_dir + "/summary.json";
@@ -222,7 +234,10 @@ int command_verify(const std::vector<std::string>& argv) {
       if (!f) throw std::runtime_error("cannot write '" + summary + "'");
     }
     std::filesystem::rename(tmp, summary);
-    std::printf("\nwrote %s and %s\n", out->path().c_str(), summary.c_str());
+    std::cerr << "[verify] report\n";
+    const std::string report_dir = in.out_dir + "/report";
+    run_report(out->path(), report_dir);
+    std::printf("\nwrote %s, %s and %s/index.html\n", out->path().c_str(), summary.c_str(), report_dir.c_str());
     return report_checks(checks);
   } catch (const std::exception& e) {
     std::cerr << "thinlayer verify: " << e.what() << "\n";

@@ -249,3 +249,34 @@ TEST_F(Cli, ThresholdsStudyWritesItsTablesChecksAndEnvironment) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, TimingStudyWritesTimeAgainstErrorForBothSolvers) {
+  const CliRun r = run("study timing --quiet --repeats 1 --out " + (dir / "s5").string());
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  const thinlayer::H5Reader f((dir / "s5" / "results.h5").string());
+  const auto solver = f.read_strings("/studies/timing/solver");
+  const auto error = f.read_doubles("/studies/timing/error");
+  const auto tolerance = f.read_doubles("/studies/timing/tolerance");
+  const auto time = f.read_doubles("/studies/timing/time_s");
+  ASSERT_EQ(solver.size(), error.size());
+  int fast = 0, relaxation = 0;
+  for (size_t i = 0; i < solver.size(); ++i) {
+    EXPECT_GT(time[i], 0.0);
+    if (solver[i] == "fast") {
+      ++fast;
+      EXPECT_LE(error[i], 1e-8);
+    } else {
+      ++relaxation;
+      // A looser tolerance leaves a larger error: the relaxation's error is at most about its
+      // residual tolerance times a modest factor, never below round-off.
+      EXPECT_GE(error[i], 1e-16);
+      EXPECT_LE(error[i], 1e4 * tolerance[i]) << i;
+    }
+  }
+  EXPECT_EQ(fast, 3);
+  EXPECT_EQ(relaxation, 8);
+}
+
+}  // namespace

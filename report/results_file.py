@@ -1,0 +1,113 @@
+"""Opening a thinlayer results file (SPEC §4) and reading its values as plain Python.
+
+The report reads nothing but this file, so everything that decides whether the file can be
+read at all lives here: a missing, unreadable, foreign or older file is refused with one
+line (`ReportError`) before anything is written.
+"""
+
+import os
+
+import h5py
+import numpy as np
+
+LAYOUT = "thinlayer-results"
+LAYOUT_VERSION = 1
+
+
+class ReportError(Exception):
+    """An input the report refuses: the message is the one line printed on stderr."""
+
+
+def text(value):
+    """An HDF5 string (attribute or dataset element) as str; h5py gives bytes or str."""
+    if isinstance(value, bytes):
+        return value.decode("utf-8", "replace")
+    if isinstance(value, np.ndarray) and value.shape == ():
+        return text(value[()])
+    return str(value)
+
+
+def open_results(path):
+    """The h5py.File of a thinlayer results file of the layout this report understands."""
+    if not os.path.exists(path):
+        raise ReportError(f"{path}: no such file")
+    if not os.path.isfile(path):
+        raise ReportError(f"{path}: not a file")
+    if not os.access(path, os.R_OK):
+        raise ReportError(f"{path}: not readable (permission denied)")
+    try:
+        f = h5py.File(path, "r")
+    except OSError as e:
+        raise ReportError(f"{path}: not a readable HDF5 file ({first_line(e)})") from None
+    try:
+        check_layout(f, path)
+    except ReportError:
+        f.close()
+        raise
+    return f
+
+
+def check_layout(f, path):
+    """Refuse a file whose root attributes do not name this layout and version."""
+    if "layout" not in f.attrs:
+        if "scenes" in f or "studies" in f:
+            # Files written before the layout attributes existed: their groups may differ.
+            raise ReportError(f"{path}: an older thinlayer results layout (no root attribute "
+                              f"'layout'); re-run thinlayer to write layout {LAYOUT!r} "
+                              f"version {LAYOUT_VERSION}")
+        raise ReportError(f"{path}: not a thinlayer results file (no root attribute 'layout')")
+    layout = text(f.attrs["layout"])
+    if layout != LAYOUT:
+        raise ReportError(f"{path}: not a thinlayer results file (layout = {layout!r}, "
+                          f"expected {LAYOUT!r})")
+    if "layout_version" not in f.attrs:
+        raise ReportError(f"{path}: an older thinlayer results layout (no root attribute "
+                          f"'layout_version')")
+    try:
+        version = int(np.asarray(f.attrs["layout_version"]).item())
+    except (TypeError, ValueError):
+        raise ReportError(f"{path}: unreadable layout_version "
+                          f"{text(f.attrs['layout_version'])!r}") from None
+    if version < LAYOUT_VERSION:
+        raise ReportError(f"{path}: an older thinlayer results layout (version {version}, "
+                          f"this report reads version {LAYOUT_VERSION})")
+    if version > LAYOUT_VERSION:
+        raise ReportError(f"{path}: a newer thinlayer results layout (version {version}, "
+                          f"this report reads version {LAYOUT_VERSION}); update report/")
+
+
+def first_line(error):
+    lines = str(error).strip().splitlines()
+    return lines[0] if lines else type(error).__name__
+
+
+def attr(node, name, default=None):
+    """An attribute as str / float / int, or `default` when the writer did not store it."""
+    if name not in node.attrs:
+        return default
+    value = node.attrs[name]
+    if isinstance(value, (bytes, str)):
+        return text(value)
+    value = np.asarray(value)
+    if value.dtype.kind in "SOU":
+        return text(value.reshape(-1)[0]) if value.size else default
+    if value.size != 1:
+        return value
+    item = value.item()
+    return item
+
+
+def strings(dataset):
+    """A dataset of strings as a list of str."""
+    return [text(v) for v in np.asarray(dataset[()]).reshape(-1)]
+
+
+def array(node, name):
+    """A numeric dataset as a numpy array (the whole dataset is small in this layout)."""
+    return np.asarray(node[name][()])
+
+
+def group(f, path):
+    """The group at `path`, or None when this results file has no such group."""
+    node = f.get(path)
+    return node if isinstance(node, h5py.Group) else None

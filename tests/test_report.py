@@ -1,0 +1,357 @@
+#!/usr/bin/python3
+"""Tests of report/make_report.py on small synthetic results files written with h5py.
+
+Run with Debian's interpreter (it sees python3-h5py and python3-matplotlib):
+    /usr/bin/python3 tests/test_report.py
+CTest runs it as `report_py` when that interpreter imports both.
+"""
+
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import h5py
+import numpy as np
+
+MAKE_REPORT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "report", "make_report.py")
+STR = h5py.string_dtype()
+
+
+# --- Synthetic results files ---------------------------------------------------------------
+
+def strings(values):
+    return np.array(values, dtype=object)
+
+
+def scene_attrs(g, **a):
+    defaults = dict(case="bar", mode="limit", law_case="table3-row-1", eps=0.0, gamma=1.0, delta=1.0,
+                    lambda_bar=4.5e8, mu_bar=5.4e8, friction=1.0, plane="strain", element="Q1", solver="fast",
+                    iterations=3, residual=1e-13, converged=1, wall_time_s=1e-3, status_tolerance=1e-6,
+                    tolerance=1e-10, nx=32, ny=32)
+    defaults.update(a)
+    for k, v in defaults.items():
+        g.attrs[k] = v
+
+
+def write_interface(g, x, normal, jump_n, jump_t, sigma_n, sigma_t, status):
+    m = len(x)
+    g["x"], g["normal"] = np.asarray(x, float), np.asarray(normal, float)
+    g["length"] = np.full(m, 1.0 / m)
+    g["jump_N"], g["jump_T"] = np.asarray(jump_n, float), np.asarray(jump_t, float)
+    g["sigma_N"], g["sigma_T"] = np.asarray(sigma_n, float), np.asarray(sigma_t, float)
+    g["status"] = np.asarray(status, np.int32)
+
+
+def write_bar_scene(f, row, solver="fast"):
+    """A bar limit scene: 32 nodes along AD with a gap / slide / stick pattern."""
+    sid = f"bar-table3-row-{row}-Q1-32x32-plane_strain-{solver}"
+    g = f.create_group(f"scenes/{sid}")
+    scene_attrs(g, law_case=f"table3-row-{row}", solver=solver)
+    x = np.stack([np.arange(32) * 1.25, np.zeros(32)], axis=1)
+    status = np.array([0] * 3 + [1] * 14 + [2] * 15)
+    write_interface(g.create_group("interface/S"), x, np.tile([0.0, 1.0], (32, 1)),
+                    np.where(status == 0, -1e-4, 0.0), np.linspace(1e-2, 0, 32) * row,
+                    np.where(status == 0, 0.0, -5.0), np.where(status == 0, 0.0, 2.0), status)
+    g["mesh/nodes"], g["mesh/cells"] = np.zeros((4, 2)), np.zeros((1, 4), np.int32)
+    g["u"] = np.zeros((4, 2))
+    g["reactions/D"] = np.zeros(2)
+    return sid
+
+
+def write_bar_layer_scene(f, row, eps):
+    """A bar layer scene: S+ (32 nodes) and S- (33 nodes), with the combined status."""
+    sid = f"bar-table3-row-{row}-Q1-32x32-plane_strain-fast-layer-eps{eps:g}"
+    g = f.create_group(f"scenes/{sid}")
+    scene_attrs(g, mode="layer", law_case=f"table3-row-{row}", eps=eps, lambda_eps=eps * 4.5e8,
+                mu_eps=eps * 5.4e8, layer_elements=2)
+    status = np.array([0] * 3 + [1] * 14 + [2] * 15)
+    for face, m, y in (("S+", 32, 0.0), ("S-", 33, -eps)):
+        x = np.stack([np.arange(m) * 1.25, np.full(m, y)], axis=1)
+        st = np.concatenate([status, [2]])[:m]
+        write_interface(g.create_group(f"interface/{face}"), x, np.tile([0.0, 1.0], (m, 1)), np.zeros(m),
+                        np.zeros(m), np.full(m, -5.0), np.full(m, 2.0), st)
+    g["combined_status"] = status.astype(np.int32)
+    g["mesh/nodes"], g["mesh/cells"], g["u"] = np.zeros((4, 2)), np.zeros((1, 4), np.int32), np.zeros((4, 2))
+
+
+def write_dovetail_scenes(f, case, gamma, delta, lambda_bar, mu_bar, eps_values):
+    """A limit scene and layer scenes along a straight S (y = 0, 5 nodes) whose layer is
+    compressed by c and sheared by d, with stresses that make its apparent stiffness
+    tend to K_N = λ̄ + 2μ̄, K_T = μ̄ as ε → 0."""
+    m = 5
+    xs = np.linspace(0.0, 1.0, m)
+    normal = np.tile([0.0, 1.0], (m, 1))
+    status = np.array([0, 1, 2, 2, 2])
+    k_n, k_t = lambda_bar + 2 * mu_bar, mu_bar
+    c, d = 1e-4, 2e-4
+    limit_id = f"dovetail-limit-{case}-h0.25-fast"
+    g = f.create_group(f"scenes/{limit_id}")
+    scene_attrs(g, case="dovetail", law_case=case, gamma=gamma, delta=delta, lambda_bar=lambda_bar,
+                mu_bar=mu_bar, friction=0.5)
+    write_interface(g.create_group("interface/S"), np.stack([xs, np.zeros(m)], 1), normal,
+                    np.full(m, c), np.full(m, d), np.full(m, -k_n * c), np.full(m, -k_t * d), status)
+    g["mesh/nodes"], g["mesh/cells"], g["u"] = np.zeros((m, 2)), np.zeros((1, 4), np.int32), np.zeros((m, 2))
+    layer_ids = []
+    for eps in eps_values:
+        sid = f"dovetail-layer-{case}-eps{eps:g}-h0.25-fast"
+        layer_ids.append(sid)
+        g = f.create_group(f"scenes/{sid}")
+        scene_attrs(g, case="dovetail", mode="layer", law_case=case, eps=eps, gamma=gamma, delta=delta,
+                    lambda_bar=lambda_bar, mu_bar=mu_bar, friction=0.5, lambda_eps=eps * lambda_bar,
+                    mu_eps=eps * mu_bar, layer_elements=1)
+        # Nodes: base and layer bottom at y = 0, layer top and tenon at y = eps (coincident pairs).
+        bottom, top = np.stack([xs, np.zeros(m)], 1), np.stack([xs, np.full(m, eps)], 1)
+        nodes = np.concatenate([bottom, bottom, top, top])
+        u_tenon = np.tile([d, -c], (m, 1))
+        u = np.concatenate([np.zeros((m, 2)), np.zeros((m, 2)), u_tenon, u_tenon])
+        g["mesh/nodes"], g["u"] = nodes, u
+        g["mesh/cells"] = np.array([[m + k, m + k + 1, 2 * m + k + 1, 2 * m + k] for k in range(m - 1)], np.int32)
+        scale = 1.0 - 10 * eps  # the layer is softer than its limit by O(eps)
+        for face, x in (("S+", top), ("S-", bottom)):
+            write_interface(g.create_group(f"interface/{face}"), x, normal, np.zeros(m), np.zeros(m),
+                            np.full(m, -k_n * c * scale), np.full(m, -k_t * d * scale), status)
+        g["combined_status"] = status.astype(np.int32)
+    return limit_id, layer_ids
+
+
+def write_table3_study(f, with_sensitivity=True):
+    g = f.create_group("studies/table3")
+    g.attrs["missing_transition_mm"] = -1.0
+    rows = g.create_group("rows")
+    rows["row"] = np.arange(1, 7, dtype=np.int32)
+    paper = np.array([[3, 16, 13], [3, 14, 15], [3, 13, 16], [0, 0, 32], [0, 0, 32], [0, 0, 32]], np.int32)
+    base = np.array([[3, 14, 15], [2, 6, 24], [0, 7, 25], [0, 0, 32], [0, 0, 32], [0, 0, 32]], np.int32)
+    for prefix, counts in (("paper", paper), ("baseline", base), ("fast", base), ("relaxation", base)):
+        for j, name in enumerate(("gap", "slide", "stick")):
+            rows[f"{prefix}_{name}"] = counts[:, j]
+    for solver in ("fast", "relaxation"):
+        rows[f"{solver}_iterations"] = np.full(6, 5, np.int32)
+        rows[f"{solver}_time_s"] = np.full(6, 1e-3)
+        rows[f"{solver}_residual"] = np.full(6, 1e-12)
+    rows["interface_jump_distance"] = np.full(6, 1e-10)
+    ref = g.create_group("refinement")
+    ref["n"] = np.array([32, 64], np.int32)
+    for r in range(1, 7):
+        ref[f"row{r}/gap_contact_mm"] = np.array([3.75, 3.12]) if r < 3 else np.array([-1.0, -1.0])
+        ref[f"row{r}/stick_slip_mm"] = np.array([21.25, 21.3]) if r < 4 else np.array([-1.0, -1.0])
+    if with_sensitivity:
+        s = g.create_group("sensitivity")
+        n = 12
+        s.create_dataset("plane", data=strings(["strain", "stress"] * 6), dtype=STR)
+        s.create_dataset("element", data=strings(["Q1", "P1-left", "P1-right"] * 4), dtype=STR)
+        s["nx"], s["ny"] = np.full(n, 32, np.int32), np.array([8, 16] * 6, np.int32)
+        s["row"] = np.repeat(np.arange(1, 7), 2).astype(np.int32)
+        s["gap"], s["slide"], s["stick"] = (np.full(n, 3, np.int32), np.full(n, 16, np.int32),
+                                            np.full(n, 13, np.int32))
+        s["converged"], s["matches_paper"] = np.ones(n, np.int32), np.array([1, 0] * 6, np.int32)
+        s["scale"], s["residual"] = np.ones(n), np.full(n, 1e-12)
+        s["gap_contact_mm"], s["stick_slip_mm"] = np.full(n, 3.0), np.full(n, 22.0)
+
+
+def write_convergence_study(f, case, limit_id, layer_ids, eps, p_fit, passed):
+    g = f.require_group("studies/convergence")
+    g.attrs.update(dict(tolerance=1e-8, corner_radius=0.1, primary_quantity="u_away", rate_tolerance=0.15))
+    c = g.create_group(case)
+    c.attrs.update({"gamma": 1.0, "delta": 1.0, "p_predicted": 1.0, "p_fit": p_fit, "p_stderr": 0.05,
+                    "C_fit": 0.1, "pass": int(passed)})
+    c.attrs["limit_scene"] = limit_id
+    c["eps"] = np.asarray(eps)
+    for q in ("u", "u_away", "jump_N", "jump_T", "sigma_N", "sigma_T", "jump_N_away", "jump_T_away",
+              "sigma_N_away", "sigma_T_away"):
+        c[f"e_{q}"] = 0.1 * np.asarray(eps) ** p_fit
+        c.attrs[f"p_{q}"], c.attrs[f"p_{q}_stderr"] = p_fit, 0.05
+    c["status_diff"] = np.zeros(len(eps), np.int32)
+    c.create_dataset("layer_scene", data=strings(layer_ids), dtype=STR)
+
+
+def write_validity_and_thresholds(f):
+    v = f.create_group("studies/validity")
+    v.create_dataset("case", data=strings(["b", "b", "d", "d"]), dtype=STR)
+    v["tau"] = np.array([0.01, 0.05, 0.01, 0.05])
+    v["eps_max"] = np.array([2e-3, 1e-2, 1e-4, 5e-3])
+    v.create_dataset("status", data=strings(["found", "at_least", "below_range", "found"]), dtype=STR)
+    v["error_at_eps_max"] = np.array([0.01, 0.003, 0.02, 0.05])
+    v["bisection_steps"] = np.array([2, 0, 0, 2], np.int32)
+    v.attrs["quantity"], v.attrs["paper_claim"] = "u", 1e-3
+    t = f.create_group("studies/thresholds")
+    t.attrs.update(dict(threshold_low=0.03, threshold_high=30.0, confirmed="all confirmed"))
+    ratio = np.geomspace(1e-4, 1e4, 17)
+    for p in ("lambda", "mu"):
+        s = t.create_group(p)
+        s["ratio"], s["error_zero"], s["error_inf"] = ratio, 0.05 * ratio / (1 + ratio), 0.05 / (1 + ratio)
+        s.attrs["fixed_other"] = "the other at its reference value"
+    c = t.create_group("crossings")
+    c.create_dataset("param", data=strings(["lambda", "lambda", "mu", "mu"]), dtype=STR)
+    c.create_dataset("law", data=strings(["0", "inf", "0", "inf"]), dtype=STR)
+    c["tau"], c["ratio"] = np.full(4, 0.01), np.array([0.25, 4.0, 0.25, 4.0])
+    c.create_dataset("status", data=strings(["found"] * 4), dtype=STR)
+
+
+def write_timing(f):
+    t = f.create_group("studies/timing")
+    t.create_dataset("solver", data=strings(["fast", "fast", "relaxation", "relaxation"]), dtype=STR)
+    t.create_dataset("level", data=strings(["coarse", "fine"] * 2), dtype=STR)
+    t["time_s"], t["error"] = np.array([1e-3, 1e-2, 0.1, 1.0]), np.array([1e-2, 1e-3, 1e-2, 1e-3])
+
+
+def write_checks(f, checks):
+    g = f.create_group("checks")
+    g.create_dataset("id", data=strings([c[0] for c in checks]), dtype=STR)
+    g["pass"] = np.array([c[1] for c in checks], np.int32)
+    for i, name in enumerate(("expected", "got", "tolerance"), start=2):
+        g.create_dataset(name, data=strings([c[i] for c in checks]), dtype=STR)
+
+
+PASSING_CHECKS = [("table3.row1.fast.baseline", 1, "3/14/15", "3/14/15", "exact"),
+                  ("convergence.d.rate", 1, "p = 1 +- 0.15", "0.98", "0.15"),
+                  ("validity.b.tau1pct.converged", 1, "converged", "yes", ""),
+                  ("thresholds.solves_converged", 1, "0", "0", ""),
+                  ("dovetail.d.limit.converged", 1, "residual <= 1e-10", "1e-13", "1e-10")]
+FAILING_CHECK = ("table3.row2.relaxation.baseline", 0, "2/6/24", "2/7/23", "exact")
+
+
+def write_results(path, layout=True, failing=False, complete=True):
+    """A results file; `complete` adds every study group, otherwise only table3 (a quick run)."""
+    with h5py.File(path, "w") as f:
+        if layout:
+            f.attrs["layout"] = "thinlayer-results"
+            f.attrs["layout_version"] = 1
+        for row in range(1, 7):
+            write_bar_scene(f, row, "fast")
+            write_bar_scene(f, row, "relaxation")
+        write_table3_study(f, with_sensitivity=complete)
+        write_checks(f, PASSING_CHECKS + ([FAILING_CHECK] if failing else []))
+        if not complete:
+            return
+        for row in (1, 2):
+            for eps in (1e-2, 1e-4):
+                write_bar_layer_scene(f, row, eps)
+        env = f.create_group("environment")
+        for k, v in dict(compiler="GCC 12", eigen="3.4.0", suitesparse="5.12.0", gmsh="4.8.4", hdf5="1.10.8",
+                         commit="abc123").items():
+            env.attrs[k] = v
+        eps = [1e-2, 1e-3, 1e-4]
+        for case, gamma, delta, lam in (("b", 1.5, 1.0, 0.0), ("d", 1.0, 1.0, 4500.0)):
+            limit_id, layer_ids = write_dovetail_scenes(f, case, gamma, delta, lam, 5400.0, eps)
+            write_convergence_study(f, case, limit_id, layer_ids, eps, p_fit=1.0 if case == "d" else 0.5,
+                                    passed=True)
+        write_validity_and_thresholds(f)
+        write_timing(f)
+
+
+# --- The tests -----------------------------------------------------------------------------
+
+def run_report(results, out_dir):
+    return subprocess.run([sys.executable, MAKE_REPORT, results, out_dir], capture_output=True, text=True,
+                          timeout=300)
+
+
+class ReportTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory(prefix="test_report-")
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def path(self, name):
+        return os.path.join(self.dir, name)
+
+    def assertBadInput(self, results, out_dir):
+        r = run_report(results, out_dir)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        lines = r.stderr.strip().splitlines()
+        self.assertEqual(len(lines), 1, r.stderr)
+        self.assertTrue(lines[0].startswith("make_report: "), r.stderr)
+        return lines[0]
+
+    def assertNothingLeftBehind(self):
+        """No half-built report: only the inputs and any earlier report remain."""
+        leftovers = [n for n in os.listdir(self.dir) if ".building-" in n or ".previous-" in n]
+        self.assertEqual(leftovers, [])
+
+    def test_complete_file_gives_every_figure(self):
+        write_results(self.path("results.h5"))
+        out = self.path("report")
+        r = run_report(self.path("results.h5"), out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(out, "index.html"), encoding="utf-8") as page:
+            html = page.read()
+        images = re.findall(r'<img src="([^"]+)"', html)
+        # Figs. 13, 14, 6-7, one convergence figure per case, thresholds, timing.
+        self.assertGreaterEqual(len(images), 7, images)
+        for src in images:
+            self.assertTrue(os.path.isfile(os.path.join(out, src)), src)
+        self.assertEqual(sorted(os.listdir(os.path.join(out, "figures"))),
+                         sorted(os.path.basename(s) for s in images))
+        self.assertEqual(re.findall(r"[^>]*: not in this results file", html), [])
+        self.assertIn("5 checks, all pass", html)
+        self.assertNothingLeftBehind()
+
+    def test_without_layout_attributes_nothing_is_written(self):
+        write_results(self.path("old.h5"), layout=False)
+        message = self.assertBadInput(self.path("old.h5"), self.path("report"))
+        self.assertIn("older", message)
+        self.assertFalse(os.path.exists(self.path("report")))
+        self.assertNothingLeftBehind()
+
+    def test_bad_inputs_leave_an_existing_report_alone(self):
+        out = self.path("report")
+        os.makedirs(out)
+        with open(os.path.join(out, "index.html"), "w") as previous:
+            previous.write("previous report")
+        with open(self.path("not.h5"), "w") as junk:
+            junk.write("not HDF5")
+        with h5py.File(self.path("foreign.h5"), "w") as f:
+            f.attrs["layout"] = "something-else"
+        with h5py.File(self.path("newer.h5"), "w") as f:
+            f.attrs["layout"], f.attrs["layout_version"] = "thinlayer-results", 2
+        for name in ("missing.h5", "not.h5", "foreign.h5", "newer.h5"):
+            self.assertBadInput(self.path(name), out)
+            with open(os.path.join(out, "index.html")) as page:
+                self.assertEqual(page.read(), "previous report", name)
+        self.assertNothingLeftBehind()
+
+    def test_failing_check_shows_as_failing(self):
+        write_results(self.path("results.h5"), failing=True, complete=False)
+        out = self.path("report")
+        r = run_report(self.path("results.h5"), out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(out, "index.html"), encoding="utf-8") as page:
+            html = page.read()
+        self.assertIn("6 checks, 1 FAIL", html)
+        self.assertIn('class="failtext"', html)
+        # The failing check is spelled out in red, in the summary and beside Table 3.
+        failing_rows = re.findall(r'<tr class="failrow">(.*?)</tr>', html, re.S)
+        self.assertTrue(any(FAILING_CHECK[0] in row and '<span class="fail">FAIL</span>' in row
+                            for row in failing_rows), failing_rows)
+
+    def test_quick_run_says_what_is_absent(self):
+        write_results(self.path("quick.h5"), complete=False)
+        out = self.path("report")
+        r = run_report(self.path("quick.h5"), out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(out, "index.html"), encoding="utf-8") as page:
+            html = page.read()
+        for absent in ("/studies/convergence", "/studies/validity", "/studies/thresholds", "/studies/timing",
+                       "/environment", "/studies/table3/sensitivity"):
+            self.assertRegex(html, re.escape(absent) + r"[^<]*\): not in this results file")
+
+    def test_replaces_an_existing_report(self):
+        write_results(self.path("results.h5"), complete=False)
+        out = self.path("report")
+        os.makedirs(os.path.join(out, "figures"))
+        with open(os.path.join(out, "figures", "stale.png"), "w") as stale:
+            stale.write("stale")
+        r = run_report(self.path("results.h5"), out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(out, "figures", "stale.png")))
+        self.assertTrue(os.path.isfile(os.path.join(out, "index.html")))
+        self.assertNothingLeftBehind()
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,90 @@
+// `thinlayer verify`: a failing check shows as failing in all three outputs (summary.json,
+// results.h5, the HTML report) and makes the exit status non-zero; an unwritable DIR is an
+// error before any work. A reduced run (--quick, case d at three thicknesses) keeps it short.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/io/h5_reader.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+struct Verify : ::testing::Test {
+  fs::path dir = fs::temp_directory_path() / ("thinlayer-verify-" + std::to_string(::getpid()));
+  void SetUp() override { fs::create_directories(dir); }
+  void TearDown() override { fs::remove_all(dir); }
+
+  // Runs verify with the given reference directory; returns the exit status.
+  int run(const fs::path& reference, const fs::path& out) {
+    const std::string command = "THINLAYER_REFERENCE_DIR=" + reference.string() + " " + THINLAYER_CLI +
+                                " verify --quick --quiet --repeats 1 --cases d --eps 1e-2,5e-3,1e-3 --out " +
+                                out.string() + " >" + (dir / "stdout").string() + " 2>" + (dir / "stderr").string();
+    const int raw = std::system(command.c_str());
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  }
+};
+
+TEST_F(Verify, AWrongReferenceValueFailsInAllThreeOutputs) {
+  // A copy of reference/ whose Table 3 baseline claims a wrong count for row 1.
+  const fs::path reference = dir / "reference";
+  fs::copy(THINLAYER_REFERENCE_DIR, reference);
+  {
+    std::string csv = slurp(reference / "table3_baseline.csv");
+    const size_t at = csv.find("\n1,3,14,15");
+    ASSERT_NE(at, std::string::npos);
+    csv.replace(at, 10, "\n1,4,13,15");
+    std::ofstream(reference / "table3_baseline.csv") << csv;
+  }
+  const fs::path out = dir / "out";
+  const int status = run(reference, out);
+  EXPECT_EQ(status, 1) << slurp(dir / "stderr");
+
+  const std::string id = "table3.row1.fast.baseline";
+  const std::string json = slurp(out / "summary.json");
+  const size_t entry = json.find("\"" + id + "\"");
+  ASSERT_NE(entry, std::string::npos) << json.substr(0, 400);
+  const size_t pass = json.find("\"pass\"", entry);
+  ASSERT_NE(pass, std::string::npos);
+  EXPECT_EQ(json.substr(pass, 13), "\"pass\": false") << json.substr(entry, 200);
+
+  const thinlayer::H5Reader h5((out / "results.h5").string());
+  const auto ids = h5.read_strings("/checks/id");
+  const auto passed = h5.read_ints("/checks/pass");
+  ASSERT_EQ(ids.size(), passed.size());
+  bool found = false;
+  for (size_t i = 0; i < ids.size(); ++i)
+    if (ids[i] == id) {
+      found = true;
+      EXPECT_EQ(passed[i], 0);
+    }
+  EXPECT_TRUE(found);
+
+  const std::string html = slurp(out / "report" / "index.html");
+  const size_t row = html.find(id);
+  ASSERT_NE(row, std::string::npos);
+  EXPECT_NE(html.find("FAIL", row), std::string::npos);
+  EXPECT_NE(slurp(dir / "stdout").find("FAIL " + id), std::string::npos);
+}
+
+TEST_F(Verify, UnwritableDirIsAnErrorAndWritesNothing) {
+  const int status = run(THINLAYER_REFERENCE_DIR, "/proc/thinlayer-cannot-write-here");
+  EXPECT_EQ(status, 2);
+  const std::string err = slurp(dir / "stderr");
+  EXPECT_NE(err.find("thinlayer verify: "), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists("/proc/thinlayer-cannot-write-here"));
+}
+
+}  // namespace
