@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "core/io/column_table.h"
 #include "core/solvers/fast_solver.h"
 #include "studies/bisection.h"
 #include "studies/error_norms.h"
@@ -159,40 +160,30 @@ std::vector<ThresholdCrossing> run_thresholds_study(const ThresholdsStudyOptions
                     std::to_string(solver.solves()) + " did not converge", sci(options.tolerance, 0)});
 
   if (out) {
-    const std::string g = "/studies/thresholds/crossings";
-    std::vector<std::string> param, law, status, quantity;
-    std::vector<double> tau, ratio, at;
-    std::vector<int> confirmed;
+    ColumnTable table;
     std::string summary;
     for (const ThresholdCrossing& c : crossings) {
-      param.push_back(c.param);
-      law.push_back(c.law);
-      quantity.push_back(c.quantity);
-      status.push_back(c.status);
-      tau.push_back(c.tau);
-      ratio.push_back(c.ratio);
-      at.push_back(c.error_at_threshold);
-      confirmed.push_back(c.confirmed);
+      table.add("param", c.param);
+      table.add("law", c.law);
+      table.add("quantity", c.quantity);
+      table.add("tau", c.tau);
+      table.add("ratio", c.ratio);
+      table.add("status", c.status);
+      table.add("error_at_threshold", c.error_at_threshold);
+      table.add("confirmed", c.confirmed ? 1 : 0);
       if (c.quantity != options.quantity) continue;
       char line[160];
       std::snprintf(line, sizeof line, "%s%s %s-law at tau %g: %s", summary.empty() ? "" : "; ", c.param.c_str(),
                     c.law.c_str(), c.tau, c.confirmed ? "confirmed" : "not confirmed");
       summary += line;
     }
-    out->dataset(g + "/param", param);
-    out->dataset(g + "/law", law);
-    out->dataset(g + "/quantity", quantity);
-    out->dataset(g + "/tau", tau);
-    out->dataset(g + "/ratio", ratio);
-    out->dataset(g + "/status", status);
-    out->dataset(g + "/error_at_threshold", at);
-    out->dataset(g + "/confirmed", confirmed);
-    out->attr("/studies/thresholds", "threshold_low", options.threshold_low);
-    out->attr("/studies/thresholds", "threshold_high", options.threshold_high);
-    out->attr("/studies/thresholds", "confirmed", summary);
-    out->attr("/studies/thresholds/crossings", "threshold_low", options.threshold_low);
-    out->attr("/studies/thresholds/crossings", "threshold_high", options.threshold_high);
-    out->attr("/studies/thresholds/crossings", "confirmed", summary);
+    const std::string g = "/studies/thresholds/crossings";
+    table.write(*out, g);
+    for (const std::string& group : {std::string("/studies/thresholds"), g}) {
+      out->attr(group, "threshold_low", options.threshold_low);
+      out->attr(group, "threshold_high", options.threshold_high);
+      out->attr(group, "confirmed", summary);
+    }
   }
   return crossings;
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/io/column_table.h"
 #include "core/io/reference_tables.h"
 #include "core/linalg/sparse_cholesky.h"
 #include "core/solvers/fast_solver.h"
@@ -121,41 +122,26 @@ std::vector<Check> run_timing_study(const TimingStudyOptions& options, H5Writer*
 
   if (out) {
     const std::string g = "/studies/timing";
-    std::vector<std::string> solver, level;
-    std::vector<int> nodes, unknowns, iterations, converged;
-    std::vector<double> tolerance, time_s, error, ratio;
+    ColumnTable solves, linear;
     for (const Row& r : rows) {
-      if (r.solver == "linear") continue;
-      solver.push_back(r.solver);
-      level.push_back(r.level + (r.solver == "relaxation" ? " tol " + sci(r.tolerance, 0) : ""));
-      nodes.push_back(r.contact_nodes);
-      unknowns.push_back(r.unknowns);
-      iterations.push_back(r.iterations);
-      converged.push_back(r.converged);
-      tolerance.push_back(r.tolerance);
-      time_s.push_back(r.time_s);
-      error.push_back(r.error);
-      ratio.push_back(r.ratio_to_linear);
-    }
-    out->dataset(g + "/solver", solver);
-    out->dataset(g + "/level", level);
-    out->dataset(g + "/contact_nodes", nodes);
-    out->dataset(g + "/unknowns", unknowns);
-    out->dataset(g + "/iterations", iterations);
-    out->dataset(g + "/converged", converged);
-    out->dataset(g + "/tolerance", tolerance);
-    out->dataset(g + "/time_s", time_s);
-    out->dataset(g + "/error", error);
-    out->dataset(g + "/ratio_to_linear", ratio);
-    std::vector<std::string> linear_level;
-    std::vector<double> linear_time;
-    for (const Row& r : rows)
       if (r.solver == "linear") {
-        linear_level.push_back(r.level);
-        linear_time.push_back(r.time_s);
+        linear.add("level", r.level);
+        linear.add("time_s", r.time_s);
+        continue;
       }
-    out->dataset(g + "/linear/level", linear_level);
-    out->dataset(g + "/linear/time_s", linear_time);
+      solves.add("solver", r.solver);
+      solves.add("level", r.level + (r.solver == "relaxation" ? " tol " + sci(r.tolerance, 0) : ""));
+      solves.add("contact_nodes", r.contact_nodes);
+      solves.add("unknowns", r.unknowns);
+      solves.add("iterations", r.iterations);
+      solves.add("converged", r.converged ? 1 : 0);
+      solves.add("tolerance", r.tolerance);
+      solves.add("time_s", r.time_s);
+      solves.add("error", r.error);
+      solves.add("ratio_to_linear", r.ratio_to_linear);
+    }
+    solves.write(*out, g);
+    linear.write(*out, g + "/linear");
     out->attr(g, "error_floor", error_floor);
     out->attr(g, "repeats", options.repeats);
     out->attr(g, "reference", std::string("fast solver at residual ") + sci(options.reference_tolerance, 0));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/io/column_table.h"
 #include "studies/bisection.h"
 #include "studies/format.h"
 
@@ -103,28 +104,19 @@ std::vector<ValidityRow> run_validity_study(const ValidityStudyOptions& options,
   }
 
   if (out) {
-    const std::string g = "/studies/validity";
-    std::vector<std::string> cases, status;
-    std::vector<double> tau, eps_max, error, beyond;
-    std::vector<int> steps, converged;
+    ColumnTable table;
     for (const ValidityRow& r : rows) {
-      cases.push_back(std::string(1, r.law_case));
-      status.push_back(r.status);
-      tau.push_back(r.tau);
-      eps_max.push_back(r.eps_max);
-      error.push_back(r.error_at_eps_max);
-      beyond.push_back(r.eps_beyond);
-      steps.push_back(r.bisection_steps);
-      converged.push_back(r.converged);
+      table.add("case", std::string(1, r.law_case));
+      table.add("tau", r.tau);
+      table.add("status", r.status);
+      table.add("eps_max", r.eps_max);
+      table.add("error_at_eps_max", r.error_at_eps_max);
+      table.add("eps_beyond", r.eps_beyond);
+      table.add("bisection_steps", r.bisection_steps);
+      table.add("converged", r.converged ? 1 : 0);
     }
-    out->dataset(g + "/case", cases);
-    out->dataset(g + "/tau", tau);
-    out->dataset(g + "/eps_max", eps_max);
-    out->dataset(g + "/status", status);
-    out->dataset(g + "/error_at_eps_max", error);
-    out->dataset(g + "/eps_beyond", beyond);
-    out->dataset(g + "/bisection_steps", steps);
-    out->dataset(g + "/converged", converged);
+    const std::string g = "/studies/validity";
+    table.write(*out, g);
     out->attr(g, "quantity", options.quantity);
     out->attr(g, "paper_claim", options.paper_claim);
   }

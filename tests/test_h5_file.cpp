@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include "core/io/column_table.h"
 #include "core/io/h5_reader.h"
 #include "core/io/h5_writer.h"
 
@@ -328,6 +329,33 @@ with h5py.File(sys.argv[1], "r") as f:
 )";
   const int status = std::system(("/usr/bin/python3 " + script + " " + path).c_str());
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "h5py check failed";
+}
+
+TEST_F(H5File, ColumnTableWritesOneDatasetPerColumn) {
+  ColumnTable t;
+  for (int i = 0; i < 3; ++i) {
+    t.add("name", std::string(1, static_cast<char>('a' + i)));
+    t.add("value", 0.5 * i);
+    t.add("count", i);
+  }
+  {
+    H5Writer w(file("t.h5"));
+    t.write(w, "/studies/x");
+    w.commit();
+  }
+  const H5Reader r(file("t.h5"));
+  EXPECT_EQ(r.read_strings("/studies/x/name"), (std::vector<std::string>{"a", "b", "c"}));
+  EXPECT_EQ(r.read_doubles("/studies/x/value"), (std::vector<double>{0.0, 0.5, 1.0}));
+  EXPECT_EQ(r.read_ints("/studies/x/count"), (std::vector<long long>{0, 1, 2}));
+}
+
+TEST_F(H5File, ColumnTableRefusesAnIncompleteRow) {
+  ColumnTable t;
+  t.add("a", 1.0);
+  t.add("a", 2.0);
+  t.add("b", 1);
+  H5Writer w(file("t.h5"));
+  EXPECT_THROW(t.write(w, "/x"), std::logic_error);
 }
 
 }  // namespace
