@@ -17,15 +17,20 @@ def render(ctx):
     time_s, error = array(g, "time_s"), array(g, "error")
     body = [how_to_read(
         "Each point is one solve: its wall time (s) against its error relative to a tightly converged "
-        "reference, both on logarithmic axes; one line per solver through its mesh levels (labelled). "
+        "reference, both on logarithmic axes; one line per solver and mesh level (for the relaxation, its points "
+        "are its residual tolerances). "
         "Lower left is better: a solver whose line lies left of another's reaches the same error sooner.")]
+    # One line per solver and mesh level (the relaxation's points at one level are its
+    # tolerances); files without `contact_nodes` get one line per solver.
+    nodes = array(g, "contact_nodes") if "contact_nodes" in g else np.zeros(len(solver))
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
-    for name in sorted(set(solver)):
-        k = [i for i in range(len(solver)) if solver[i] == name]
+    for name, n in sorted(set(zip(solver, nodes))):
+        k = [i for i in range(len(solver)) if solver[i] == name and nodes[i] == n]
         ok = [i for i in k if time_s[i] > 0 and error[i] > 0 and np.isfinite(error[i])]
         if not ok:
             continue
-        line, = ax.loglog(time_s[ok], error[ok], "o-", label=name)
+        ok.sort(key=lambda i: time_s[i])
+        line, = ax.loglog(time_s[ok], error[ok], "o-", label=f"{name}, {int(n)} contact nodes" if n else name)
         for i in ok:
             ax.annotate(level[i], (time_s[i], error[i]), fontsize=7, xytext=(3, 3), textcoords="offset points",
                         color=line.get_color())
