@@ -13,6 +13,7 @@
 
 #include "core/io/h5_writer.h"
 #include "studies/args.h"
+#include "studies/stopwatch.h"
 #include "studies/summary_json.h"
 #include "studies/convergence_study.h"
 #include "studies/dovetail_study.h"
@@ -189,7 +190,7 @@ int command_study(const std::vector<std::string>& argv) {
                                       name == "validity" || name == "asymptotics",
                                       name == "thresholds" || name == "asymptotics", out.get());
     std::printf("\nstudy %s: %.1f s wall time\n", name.c_str(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                seconds_since(start));
     if (out) {
       write_checks(*out, checks);
       out->commit();
@@ -219,7 +220,7 @@ int command_verify(const std::vector<std::string>& argv) {
       const auto start = std::chrono::steady_clock::now();
       const std::vector<Check> c = study();
       checks.insert(checks.end(), c.begin(), c.end());
-      timings[name + "_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      timings[name + "_s"] = seconds_since(start);
     };
     timed("table3", [&] { return run_table3_study(in.table3, out.get()); });
     timed("asymptotics", [&] { return run_asymptotic_studies(in, true, true, true, out.get()); });

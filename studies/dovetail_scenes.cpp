@@ -1,5 +1,7 @@
 #include "studies/dovetail_scenes.h"
 
+#include "studies/stopwatch.h"
+
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -7,10 +9,6 @@
 namespace thinlayer {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 void add_dovetail_attributes(SceneRecord& r, const std::string& mode, const std::string& law_case,
                              const dovetail::Exponents& e, double eps, const dovetail::MeshOptions& mesh) {

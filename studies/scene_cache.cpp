@@ -1,10 +1,12 @@
 #include "studies/scene_cache.h"
 
+#include "studies/stopwatch.h"
+
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cstdio>
 #include <exception>
+#include <set>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -62,10 +64,9 @@ DovetailScene DovetailSceneCache::compute(const DovetailSceneDef& def) {
 
 void DovetailSceneCache::solve(const std::vector<DovetailSceneDef>& defs) {
   std::vector<DovetailSceneDef> todo;
+  std::set<std::string> queued;
   for (const DovetailSceneDef& d : defs) {
-    bool queued = false;
-    for (const DovetailSceneDef& t : todo) queued |= t.definition(bulk_.options()) == d.definition(bulk_.options());
-    if (find(d) || queued) {
+    if (find(d) || !queued.insert(d.definition(bulk_.options())).second) {
       ++reuses_;
       continue;
     }
@@ -77,21 +78,20 @@ void DovetailSceneCache::solve(const std::vector<DovetailSceneDef>& defs) {
   auto store = [&](const DovetailSceneDef& d, DovetailScene scene, double seconds) {
     std::lock_guard<std::mutex> lock(mutex_);
     const std::string text = d.definition(bulk_.options());
+    const bool converged = scene.report.converged;
     scenes_[definition_hash(text)] = {text, std::make_unique<DovetailScene>(std::move(scene))};
     ++solves_;
     solve_time_s_ += seconds;
     const int k = ++done;
-    if (verbose_) {
-      const DovetailScene& s = *scenes_[definition_hash(text)].second;
+    if (verbose_)
       std::fprintf(stderr, "[%s] %d/%zu  case %s %s%s  %s in %.2f s\n", tag_.c_str(), k, todo.size(), d.law_case.c_str(),
                    d.mode.c_str(), d.mode == "layer" ? (" eps " + std::to_string(d.eps)).c_str() : "",
-                   s.report.converged ? "converged" : "NOT converged", seconds);
-    }
+                   converged ? "converged" : "NOT converged", seconds);
   };
   auto run = [&](const DovetailSceneDef& d) {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     DovetailScene scene = compute(d);
-    store(d, std::move(scene), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    store(d, std::move(scene), seconds_since(start));
   };
   size_t first_layer = 0;
   for (; first_layer < todo.size() && todo[first_layer].mode == "limit"; ++first_layer) run(todo[first_layer]);

@@ -1,5 +1,7 @@
 #include "studies/table3_study.h"
 
+#include "studies/stopwatch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,12 +15,6 @@
 namespace thinlayer {
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 
 // Where the statuses change along AD, found as the zero of a quantity that changes sign

@@ -1,7 +1,6 @@
 #include "studies/timing_study.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <string>
 
@@ -12,29 +11,13 @@
 #include "core/solvers/relaxation_solver.h"
 #include "studies/bar_scenes.h"
 #include "studies/format.h"
+#include "studies/stopwatch.h"
 
 namespace thinlayer {
 
 namespace {
 
 constexpr double error_floor = 1e-16;  // round-off: a smaller error is stored as this
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The median wall time of `repeats` runs of f; the last run's result in `result`.
-template <class F>
-double median_time(int repeats, F&& f) {
-  std::vector<double> t;
-  for (int i = 0; i < repeats; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    t.push_back(seconds_since(start));
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
 
 struct Row {
   std::string solver, level;
