@@ -1,5 +1,6 @@
 #include "studies/thresholds_study.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -65,6 +66,19 @@ class Solver {
   int solves_ = 0, failures_ = 0;
 };
 
+// Where an error that grows with x crosses τ, from a sweep (x ascending) refined by bisection:
+// ("found", the largest x with error ≤ τ), or ("never", first x) when the sweep starts above τ,
+// or ("always", last x) when it never leaves it.
+std::pair<std::string, double> crossing(const std::vector<double>& x, const std::vector<double>& e, double tau,
+                                        const std::function<double(double)>& error_at, int steps) {
+  size_t within = 0;  // how many leading samples are within τ
+  while (within < e.size() && e[within] <= tau) ++within;
+  if (within == 0) return {"never", x.front()};
+  if (within == e.size()) return {"always", x.back()};
+  const size_t k = within - 1;
+  return {"found", bisect_log(error_at, {x[k], e[k], x[k + 1], e[k + 1]}, tau, steps).eps_within};
+}
+
 }  // namespace
 
 std::vector<ThresholdCrossing> run_thresholds_study(const ThresholdsStudyOptions& options, DovetailLimitBulk& bulk,
@@ -107,30 +121,17 @@ std::vector<ThresholdCrossing> run_thresholds_study(const ThresholdsStudyOptions
         // As a function of x = ρ (0 law) or x = 1/ρ (∞ law) the error grows with x: the crossing
         // is the largest x with error ≤ τ.
         auto e_of_x = [&](double x) { return solver.error(q, finite(zero ? x : 1 / x), replaced); };
-        const std::vector<double>& e_sweep = zero ? e_zero[q] : e_inf[q];
+        // The sweep in x, ascending.
+        std::vector<double> x = ratio, e = zero ? e_zero[q] : e_inf[q];
+        if (!zero) {
+          for (double& v : x) v = 1 / v;
+          std::reverse(x.begin(), x.end());
+          std::reverse(e.begin(), e.end());
+        }
         for (double tau : options.taus) {
-          ThresholdCrossing c{s.param, law, q, tau, "", 0.0, at_threshold, at_threshold <= tau};
-          int within = -1;  // the largest sampled x within τ, scanning x upwards
-          for (int i = 0; i <= n; ++i) {
-            const int k = zero ? i : n - i;
-            if (e_sweep[k] <= tau) within = k;
-            else break;
-          }
-          if (within < 0) {
-            c.status = "never";
-            c.ratio = zero ? ratio.front() : ratio.back();
-          } else if (within == (zero ? n : 0)) {
-            c.status = "always";
-            c.ratio = zero ? ratio.back() : ratio.front();
-          } else {
-            const int beyond = zero ? within + 1 : within - 1;
-            auto x = [&](int k) { return zero ? ratio[k] : 1 / ratio[k]; };
-            const Bracket b = bisect_log(e_of_x, {x(within), e_sweep[within], x(beyond), e_sweep[beyond]}, tau,
-                                         options.bisection_steps);
-            c.status = "found";
-            c.ratio = zero ? b.eps_within : 1 / b.eps_within;
-          }
-          crossings.push_back(c);
+          const auto [status, x_crossing] = crossing(x, e, tau, e_of_x, options.bisection_steps);
+          crossings.push_back({s.param, law, q, tau, status, zero ? x_crossing : 1 / x_crossing, at_threshold,
+                               at_threshold <= tau});
         }
       }
     if (out) {
