@@ -94,6 +94,21 @@ TEST_F(Verify, AWrongReferenceValueFailsInAllThreeOutputs) {
   EXPECT_TRUE(h5.exists("/environment"));
 
   const std::string html = slurp(out / "report" / "index.html");
+  // Every check: the same verdict in summary.json, in /checks and in every report row that
+  // shows it (a row is `<td class="l">ID</td><td><span class="pass|fail">`).
+  for (size_t i = 0; i < ids.size(); ++i) {
+    SCOPED_TRACE(ids[i]);
+    const size_t in_json = json.find("\"id\": \"" + ids[i] + "\"");
+    ASSERT_NE(in_json, std::string::npos);
+    EXPECT_EQ(json.substr(json.find("\"pass\": ", in_json), 13) == "\"pass\": true,", passed[i] == 1);
+    const std::string cell = "<td class=\"l\">" + ids[i] + "</td><td><span class=\"";
+    int rows = 0;
+    for (size_t at = html.find(cell); at != std::string::npos; at = html.find(cell, at + 1)) {
+      ++rows;
+      EXPECT_EQ(html.substr(at + cell.size(), 4), passed[i] ? "pass" : "fail");
+    }
+    EXPECT_GE(rows, 1);
+  }
   const size_t row = html.find(id);
   ASSERT_NE(row, std::string::npos);
   EXPECT_NE(html.find("FAIL", row), std::string::npos);
