@@ -34,6 +34,8 @@ std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_ca
   id << "bar-" << law_case << "-" << to_string(mesh.element);
   if (mesh.element == ElementType::P1) id << (mesh.diagonal == TriangleDiagonal::Right ? "R" : "L");
   id << "-" << mesh.nx << "x" << mesh.ny << "-plane_" << to_string(mesh.plane);
+  if (mesh.distortion != 0) id << "-distorted" << mesh.distortion;
+  if (mesh.load_scale != 1) id << "-load" << mesh.load_scale;
   id << "-" << to_string(solver);
   return id.str();
 }
@@ -66,6 +68,8 @@ void add_bar_attributes(SceneRecord& r, const bar::MeshOptions& mesh, const std:
   r.numbers["friction"] = bar::friction;
   r.integers["nx"] = mesh.nx;
   r.integers["ny"] = mesh.ny;
+  r.numbers["mesh_distortion"] = mesh.distortion;
+  r.numbers["load_scale"] = mesh.load_scale;
 }
 
 }  // namespace

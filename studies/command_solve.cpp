@@ -51,7 +51,7 @@ Exit status: 0 converged, 1 not converged (the result is still written), 2 bad i
 namespace {
 
 const std::set<std::string> bar_only = {"row", "lambda-bar", "mu-bar", "friction", "scale", "nx", "ny", "element",
-                                        "diagonal", "plane"};
+                                        "diagonal", "plane", "distortion", "load-scale"};
 const std::set<std::string> dovetail_only = {"law-case", "gamma", "delta", "h-interface", "h-far"};
 
 struct SolveInput {

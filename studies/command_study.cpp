@@ -19,6 +19,7 @@
 #include "studies/dovetail_study.h"
 #include "studies/report_runner.h"
 #include "studies/results_file.h"
+#include "studies/stress_study.h"
 #include "studies/table3_study.h"
 #include "studies/thresholds_study.h"
 #include "studies/timing_study.h"
@@ -43,11 +44,16 @@ Studies:
   asymptotics  S2, S3 and S4 together, sharing their scenes
   timing       S5, quick version: wall time against error for the fast solver and the
                relaxation on the bar at several mesh levels, and the ratio to one linear solve
+  stress       S5 stress tests: eps to 1e-8, stiffness contrast to 1e-12, f from 0 to 10,
+               distorted meshes, interfaces that open everywhere, capped solves; each scene
+               converges or stops with a named cause (iteration cap, singular system, loss of
+               accuracy with a condition estimate), and no NaN/Inf is written
 
 Options:
   --out DIR          write DIR/results.h5 (the scenes and the study's tables)
   --repeats N        table3, timing: repetitions per timed solve, medians reported (default 3)
-  --quick            table3: skip the sensitivity and refinement parts
+  --quick            table3: skip the sensitivity and refinement parts; stress: skip the
+                     scenes at eps <= 1e-6 and the slowest contrast
   --quiet            no progress lines on stderr
   --cases LETTERS    dovetail studies: the cases to run (default abcdefghi)
   --eps LIST         dovetail studies: comma-separated thicknesses (default 1e-2,5e-3,1e-3,5e-4,1e-4)
@@ -62,8 +68,8 @@ Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input
 
 const char* const verify_help = R"(usage: thinlayer verify --out DIR [--repeats N] [--quiet]
 
-Runs the studies S1 (table3), S2-S4 (convergence, validity, thresholds), S5 quick (timing)
-and writes
+Runs the studies S1 (table3), S2-S4 (convergence, validity, thresholds), S5 (timing, quick,
+and stress) and writes
   DIR/results.h5           every scene, study table and check, the environment
   DIR/summary.json         every check: id, pass, expected, got, tolerance; and the timings
   DIR/report/index.html    the report, with its figures (made from results.h5 alone:
@@ -83,6 +89,7 @@ struct StudyInput {
   ValidityStudyOptions validity;
   ThresholdsStudyOptions thresholds;
   TimingStudyOptions timing;
+  StressStudyOptions stress;
   int threads = 2;
   bool verbose = true;
 };
@@ -96,9 +103,12 @@ StudyInput parse(const std::vector<std::string>& argv, bool require_out) {
   in.table3.repeats = args.integer("repeats", 3);
   if (in.table3.repeats < 1) throw std::invalid_argument("--repeats must be >= 1");
   in.timing.repeats = in.table3.repeats;
-  if (args.has("quick")) in.table3.sensitivity = in.table3.refinement = false;
+  if (args.has("quick")) {
+    in.table3.sensitivity = in.table3.refinement = false;
+    in.stress.quick = true;
+  }
   in.verbose = !args.has("quiet");
-  in.table3.verbose = in.dovetail.verbose = in.verbose;
+  in.table3.verbose = in.dovetail.verbose = in.stress.verbose = in.verbose;
   in.dovetail.cases = args.text("cases", in.dovetail.cases);
   for (char c : in.dovetail.cases)
     if (c < 'a' || c > 'i') throw std::invalid_argument("--cases: unknown case '" + std::string(1, c) + "' (expected a..i)");
@@ -163,16 +173,17 @@ int report_checks(const std::vector<Check>& checks) {
 
 int command_study(const std::vector<std::string>& argv) {
   static const std::vector<std::string> names = {"table3",     "dovetail",    "convergence", "validity",
-                                                 "thresholds", "asymptotics", "timing"};
+                                                 "thresholds", "asymptotics", "timing",   "stress"};
   StudyInput in;
   std::string name;
   try {
     if (argv.empty() || argv[0].rfind("--", 0) == 0)
-      throw std::invalid_argument("which study? (table3, dovetail, convergence, validity, thresholds, asymptotics or timing)");
+      throw std::invalid_argument(
+          "which study? (table3, dovetail, convergence, validity, thresholds, asymptotics, timing or stress)");
     name = argv[0];
     if (std::find(names.begin(), names.end(), name) == names.end())
       throw std::invalid_argument("unknown study '" + name +
-                                  "' (expected table3, dovetail, convergence, validity, thresholds, asymptotics or timing)");
+                                  "' (expected table3, dovetail, convergence, validity, thresholds, asymptotics, timing or stress)");
     in = parse(std::vector<std::string>(argv.begin() + 1, argv.end()), false);
   } catch (const std::exception& e) {
     std::cerr << "thinlayer study: " << e.what() << "\n";
@@ -185,6 +196,7 @@ int command_study(const std::vector<std::string>& argv) {
     if (name == "table3") checks = run_table3_study(in.table3, out.get());
     else if (name == "dovetail") checks = run_dovetail_study(in.dovetail, out.get());
     else if (name == "timing") checks = run_timing_study(in.timing, out.get());
+    else if (name == "stress") checks = run_stress_study(in.stress, out.get());
     else
       checks = run_asymptotic_studies(in, name == "convergence" || name == "validity" || name == "asymptotics",
                                       name == "validity" || name == "asymptotics",
@@ -225,6 +237,7 @@ int command_verify(const std::vector<std::string>& argv) {
     timed("table3", [&] { return run_table3_study(in.table3, out.get()); });
     timed("asymptotics", [&] { return run_asymptotic_studies(in, true, true, true, out.get()); });
     timed("timing", [&] { return run_timing_study(in.timing, out.get()); });
+    timed("stress", [&] { return run_stress_study(in.stress, out.get()); });
     write_checks(*out, checks);
     out->commit();
     const std::string summary = in.out_dir + "/summary.json";

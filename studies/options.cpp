@@ -1,5 +1,6 @@
 #include "studies/options.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace thinlayer {
@@ -18,6 +19,10 @@ bar::MeshOptions parse_bar_mesh(const Args& args) {
   else if (diagonal == "left") m.diagonal = TriangleDiagonal::Left;
   else throw std::invalid_argument("unknown diagonal '" + diagonal + "' (expected right or left)");
   const std::string plane = args.text("plane", "strain");
+  m.distortion = args.number("distortion", 0.0);
+  if (!(m.distortion >= 0 && m.distortion < 0.5)) throw std::invalid_argument("--distortion must be in [0, 0.5)");
+  m.load_scale = args.number("load-scale", 1.0);
+  if (!std::isfinite(m.load_scale)) throw std::invalid_argument("--load-scale must be finite");
   if (plane == "strain") m.plane = PlaneHypothesis::Strain;
   else if (plane == "stress") m.plane = PlaneHypothesis::Stress;
   else throw std::invalid_argument("unknown plane hypothesis '" + plane + "' (expected strain or stress)");

@@ -14,12 +14,15 @@ namespace thinlayer {
   "  --element E          Q1 (default) | P1\n" \
   "  --diagonal D         P1 only: right (default, '/') | left ('\\')\n" \
   "  --plane P            strain (default) | stress\n" \
+  "  --distortion D       bar: move interior nodes by up to D x the element size, 0 <= D < 0.5\n" \
+  "                       (a reproducible pseudo-random pattern; stress tests)\n" \
+  "  --load-scale S       bar: multiply the tractions F1, F2 by S (-1 lifts the bar off AD)\n" \
   "  --tolerance T        SPEC residual to reach (default 1e-10)\n" \
   "  --max-iterations N   solver iteration cap (default: fast 200, 1000 with a floating layer;\n" \
   "                       relaxation 100000 sweeps)\n" \
   "  --omega W            relaxation's over-relaxation coefficient in (0, 2) (default 1.8)\n"
 
-inline const std::set<std::string> mesh_and_solver_options = {"nx", "ny", "element", "diagonal", "plane",
+inline const std::set<std::string> mesh_and_solver_options = {"nx", "ny", "element", "diagonal", "plane", "distortion", "load-scale",
                                                               "tolerance", "max-iterations", "omega"};
 
 bar::MeshOptions parse_bar_mesh(const Args& args);

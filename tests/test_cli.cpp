@@ -197,6 +197,49 @@ TEST_F(Cli, LayerModeWritesBothFacesOfTheLayer) {
   EXPECT_EQ(h5.children(g + "/reactions"), (std::vector<std::string>{"base_bottom", "tenon_top"}));
 }
 
+// Issue 5: a deliberately singular scene and a deliberately non-converging one each stop with
+// their diagnostic, a non-zero exit status, and a result marked as not converged.
+TEST_F(Cli, SingularSceneNamesItsCauseAndExitsNonZero) {
+  // Reversed loads lift the bar off AD: the layer beneath touches nothing, and floats.
+  const fs::path file = dir / "floating.h5";
+  const CliRun r = run("solve --case bar --mode layer --row 1 --eps 1e-3 --load-scale -1 --out " + file.string());
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("singular system"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("held by none of its contacts"), std::string::npos) << r.err;
+  const thinlayer::H5Reader h5(file.string());
+  const std::string g = "/scenes/" + h5.children("/scenes").at(0);
+  EXPECT_EQ(h5.attr_int(g, "converged"), 0);
+  EXPECT_EQ(h5.attr_string(g, "stop_cause"), "singular system");
+  EXPECT_GT(h5.attr_double(g, "condition_estimate"), 1e14);  // numerically singular, and said so
+  EXPECT_DOUBLE_EQ(h5.attr_double(g, "load_scale"), -1.0);
+}
+
+TEST_F(Cli, NonConvergingSceneNamesItsCauseAndExitsNonZero) {
+  const fs::path file = dir / "capped.h5";
+  const CliRun r = run("solve --case bar --row 1 --max-iterations 1 --out " + file.string());
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("iteration cap"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("condition estimate"), std::string::npos) << r.err;
+  const thinlayer::H5Reader h5(file.string());
+  const std::string g = "/scenes/" + h5.children("/scenes").at(0);
+  EXPECT_EQ(h5.attr_int(g, "converged"), 0);
+  EXPECT_EQ(h5.attr_string(g, "stop_cause"), "iteration cap");
+}
+
+TEST_F(Cli, StressOptionsAreValidated) {
+  const std::string out = " --out " + (dir / "scene.h5").string();
+  for (const char* args : {"solve --case bar --row 1 --distortion 0.5", "solve --case bar --row 1 --distortion -0.1",
+                           "solve --case bar --row 1 --load-scale nan", "solve --case dovetail --law-case d --load-scale 2",
+                           "solve --case bar --row 1 --distortion 0.45"}) {
+    SCOPED_TRACE(args);
+    const CliRun r = run(std::string(args) + out);
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_TRUE(dir_empty());
+  }
+}
+
 TEST_F(Cli, RelaxationSolveReportsNonConvergenceWithExitStatus1) {
   const fs::path file = dir / "capped.h5";
   const CliRun r = run("solve --case bar --row 3 --solver relaxation --max-iterations 3 --out " + file.string());

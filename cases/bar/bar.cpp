@@ -1,8 +1,11 @@
 #include "cases/bar/bar.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "core/mesh/distortion.h"
 #include "core/mesh/layer_band.h"
 
 namespace thinlayer::bar {
@@ -16,14 +19,21 @@ Model make_model(const MeshOptions& options) {
   spec.element = options.element;
   spec.diagonal = options.diagonal;
   Body bar{"bar", structured_rectangle(spec), Material{lambda_m, mu_m, options.plane}};
+  if (options.distortion != 0) {
+    distort_interior(bar.mesh, options.distortion, side / std::max(options.nx, options.ny));
+    if (!(mesh_quality(bar.mesh).min_scaled_jacobian > 0))
+      throw std::invalid_argument("mesh distortion " + std::to_string(options.distortion) +
+                                  " inverts a cell of the bar's mesh (guaranteed valid below 0.25 for Q1, 0.167 for P1)");
+  }
+  if (!std::isfinite(options.load_scale)) throw std::invalid_argument("bar: the load scale must be finite");
 
   const Mesh& mesh = bar.mesh;
   Model model;
   model.dirichlet.push_back({"DE", 0, mesh.node_set("right"), 0, 0.0});
   model.dirichlet.push_back({"D", 0, mesh.node_set("bottom_right"), 1, 0.0});
   model.dirichlet.push_back({"D", 0, mesh.node_set("bottom_right"), 0, 0.0});  // already owned by DE
-  model.tractions.push_back({"AG", 0, mesh.edge_set("left"), {F1, 0.0}});
-  model.tractions.push_back({"GE", 0, mesh.edge_set("top"), {0.0, F2}});
+  model.tractions.push_back({"AG", 0, mesh.edge_set("left"), {options.load_scale * F1, 0.0}});
+  model.tractions.push_back({"GE", 0, mesh.edge_set("top"), {0.0, options.load_scale * F2}});
   model.bodies.push_back(std::move(bar));
   return model;
 }

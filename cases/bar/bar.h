@@ -23,6 +23,13 @@ struct MeshOptions {
   ElementType element = ElementType::Q1;
   TriangleDiagonal diagonal = TriangleDiagonal::Right;  // P1 only
   PlaneHypothesis plane = PlaneHypothesis::Strain;
+  // Stress tests (S5). Interior nodes moved by up to this fraction of the element size
+  // (core/mesh/distortion.h), in [0, 0.5); the boundary stays put. A distortion that inverts
+  // a cell is refused (std::invalid_argument).
+  double distortion = 0;
+  // Multiplies both tractions F1 and F2; -1 pulls AG outwards and GE upwards, which lifts
+  // the bar off AD (an interface that opens everywhere).
+  double load_scale = 1;
 };
 
 // Body 0 is the bar; Dirichlet conditions "DE" (u₁ on DE) and "D" (u₂ at D); tractions

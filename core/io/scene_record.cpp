@@ -1,5 +1,6 @@
 #include "core/io/scene_record.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace thinlayer {
@@ -78,6 +79,8 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   s.text["solver_message"] = report.message;
   s.integers["iterations"] = report.iterations;
   s.integers["converged"] = report.converged ? 1 : 0;
+  s.text["stop_cause"] = to_string(report.stop_cause);
+  s.numbers["condition_estimate"] = report.condition_estimate;
   s.numbers["residual"] = report.residual.value();
   s.numbers["residual_interface"] = report.residual.interface;
   s.numbers["residual_bulk"] = report.residual.bulk;
@@ -89,7 +92,29 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   return s;
 }
 
+namespace {
+
+// SPEC §4 / S5: a NaN or Inf is never written as a result. Inputs may be infinite (a rigid
+// law's λ̄ = ∞), so only the solution's fields are checked.
+void require_finite_results(const SceneRecord& scene) {
+  auto check = [&](const std::string& what, auto begin, auto end) {
+    for (auto it = begin; it != end; ++it)
+      if (!std::isfinite(*it))
+        throw std::runtime_error("scene " + scene.id + ": refusing to write a non-finite value in " + what);
+  };
+  check("u", scene.u.data(), scene.u.data() + scene.u.size());
+  for (const InterfaceFields& f : scene.interfaces)
+    for (const Eigen::VectorXd* v : {&f.jump_N, &f.jump_T, &f.sigma_N, &f.sigma_T})
+      check("interface " + f.name, v->data(), v->data() + v->size());
+  for (const auto& [name, R] : scene.reactions) check("reaction " + name, R.data(), R.data() + 2);
+  for (const char* name : {"residual", "residual_interface", "residual_bulk"})
+    if (scene.numbers.count(name)) check(name, &scene.numbers.at(name), &scene.numbers.at(name) + 1);
+}
+
+}  // namespace
+
 void write_scene(H5Writer& file, const SceneRecord& scene) {
+  require_finite_results(scene);
   const std::string g = "/scenes/" + scene.id;
   file.group(g);
   for (const auto& [name, value] : scene.text) file.attr(g, name, value);

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -99,7 +100,8 @@ Eigen::VectorXd jump_part(const Condensed& c, const Eigen::VectorXd& r, const Ei
 // interface forces r and, after them, the floating bodies' interface DOFs w.
 struct Step {
   Eigen::VectorXd r, w;
-  bool singular = false;  // a floating body left undetermined: minimum-norm w taken
+  bool singular = false;  // rank deficient (a floating body left undetermined): minimum-norm solution taken
+  double rcond = 1;       // reciprocal condition estimate of the equilibrated system
 };
 
 Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
@@ -144,12 +146,10 @@ Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
     b.tail(nw) = c.f_L;
   }
   Step step;
-  double rcond = 1;
-  Eigen::VectorXd x = n ? solve_equilibrated(A, b, &rcond) : Eigen::VectorXd();
+  Eigen::VectorXd x = n ? solve_equilibrated(A, b, &step.rcond) : Eigen::VectorXd();
   // A floating body whose contacts are all open (or only slide) has rigid motions the step
   // cannot fix: the system is singular. Then take the minimum-norm solution and say so.
   const double scale = std::max(b.norm(), 1e-300);
-  step.singular = rcond < 1e-14;
   if (n && (!x.allFinite() || (A * x - b).norm() > 1e-8 * scale)) {
     x = A.completeOrthogonalDecomposition().solve(b);
     step.singular = true;
@@ -205,7 +205,8 @@ void nsgs_sweeps(const Condensed& c, Eigen::VectorXd& r, int sweeps) {
 struct ActiveSetRun {
   int iterations = 0, nsgs_sweeps = 0;
   bool settled = false;   // the statuses reproduced themselves
-  bool singular = false;  // the last step's system was singular (a floating body left free)
+  bool singular = false;  // the last step's system was rank deficient (a floating body left free)
+  double rcond = 1;       // of the last step's system
 };
 
 // Semismooth Newton / primal-dual active set from the given statuses and iterate.
@@ -217,6 +218,7 @@ ActiveSetRun active_set(const Condensed& c, const ContactProblem& problem, std::
   for (run.iterations = 1; run.iterations <= max_iterations; ++run.iterations) {
     const Step step = solve_statuses(c, statuses);
     run.singular = step.singular;
+    run.rcond = step.rcond;
     if (damped && run.iterations > 1) {
       // Globalise the Newton step with a backtracking line search on the natural map.
       const double merit0 = condensed_residual(c, problem, r, jump_part(c, r, w));
@@ -252,6 +254,50 @@ ActiveSetRun active_set(const Condensed& c, const ContactProblem& problem, std::
 }  // namespace
 
 namespace {
+
+// Does every contact of the floating bodies stand open? Then nothing holds them and their
+// rigid position is undetermined: the system is singular, whatever the residual says.
+bool floating_bodies_free(const Condensed& c, const std::vector<Active>& statuses) {
+  if (floating_unknowns(c) == 0) return false;
+  for (int k = 0; k < static_cast<int>(statuses.size()); ++k) {
+    const bool touches_floating = c.B_L.middleRows<2>(2 * k).cwiseAbs().maxCoeff() > 0;
+    if (touches_floating && statuses[k] != Active::Gap) return false;
+  }
+  return true;
+}
+
+StopCause stop_cause(const Condensed& c, const std::vector<Active>& statuses, const ActiveSetRun& run,
+                     const SolveReport& report, bool cap_reached) {
+  if (!report.u.allFinite() || !report.r.allFinite() || !std::isfinite(report.residual.value()))
+    return StopCause::NonFinite;
+  if (floating_bodies_free(c, statuses)) return StopCause::Singular;
+  if (report.converged) return StopCause::Converged;
+  if (cap_reached) return StopCause::IterationCap;
+  return run.singular ? StopCause::Singular : StopCause::LossOfAccuracy;
+}
+
+std::string explain(const SolveReport& report, int max_iterations) {
+  std::ostringstream why;
+  switch (report.stop_cause) {
+    case StopCause::IterationCap:
+      why << "the cap of " << max_iterations << " active-set steps was reached";
+      break;
+    case StopCause::Singular:
+      why << "a floating body is held by none of its contacts, so its rigid position is undetermined; "
+          << "the minimum-norm position is reported";
+      break;
+    case StopCause::LossOfAccuracy:
+      why << "the statuses settled but the linear solve of them stops short of the tolerance";
+      break;
+    case StopCause::NonFinite:
+      why << "NaN or Inf in the iterate";
+      break;
+    case StopCause::Converged:
+      break;
+  }
+  why << "; condition estimate " << report.condition_estimate << " of the final active-set system";
+  return why.str();
+}
 
 SolveReport attempt(const ContactProblem& problem, const CondensedInterface& condensed, const SolverOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -295,7 +341,6 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       report.iterations += step.iterations;
       run.nsgs_sweeps += step.nsgs_sweeps;
       run.settled = step.settled;
-      run.singular = step.singular;
       if (true_residual(r, w) <= options.tolerance) break;
       if (step.settled) {
         // Accepted on the true residual alone: a singular system (the layer's position not
@@ -310,24 +355,29 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       const bool quick = step.settled && step.iterations <= 3;
       alpha = quick ? std::max(alpha * 0.1, options.proximal_weight * 1e-6) : std::min(alpha * 10, options.proximal_weight);
     }
-    // Is the answer unique? Not if the final statuses leave the floating body free to move.
-    run.singular = solve_statuses(c, statuses).singular;
+    // The conditioning of the final statuses' system on the true (unregularised) problem.
+    const Step last = solve_statuses(c, statuses);
+    run.singular = last.singular;
+    run.rcond = last.rcond;
   }
 
   report.r = r;
   report.u = condensed.displacement(problem, r, w);
   report.residual = contact_residual(problem, report.u, report.r);
   report.converged = report.residual.value() <= options.tolerance;
+  // Capped at 1e300 so that it stays a number (an exactly singular system has rcond 0).
+  report.condition_estimate = 1.0 / std::max(run.rcond, 1e-300);
+  report.stop_cause = stop_cause(c, statuses, run, report, report.iterations >= max_iterations);
+  report.converged = report.stop_cause == StopCause::Converged;
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream msg;
   msg << (report.converged ? "converged" : "NOT converged") << " after " << report.iterations << " active-set steps"
       << (proximal_steps ? " in " + std::to_string(proximal_steps) + " proximal steps" : "")
       << (run.nsgs_sweeps ? " and " + std::to_string(run.nsgs_sweeps) + " NSGS sweeps" : "")
-      << (run.singular ? " (a floating body is not held by its contacts: its position is not unique)" : "")
-      << (!report.converged && run.settled && !proximal_steps
-              ? " (statuses settled but the linear solve lost accuracy: ill-conditioned system)"
-              : "")
       << ", residual " << report.residual.value() << " (tolerance " << options.tolerance << ")";
+  if (!report.converged) msg << ": " << to_string(report.stop_cause) << " (" << explain(report, max_iterations) << ")";
+  else if (report.condition_estimate > 1e12)
+    msg << "; ill-conditioned: condition estimate " << report.condition_estimate << " of the final active-set system";
   report.message = msg.str();
   return report;
 }
@@ -337,7 +387,8 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
 SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& condensed,
                        const SolverOptions& options) {
   SolveReport report = attempt(problem, condensed, options);
-  if (report.converged || condensed.num_floating_unknowns() == 0) return report;
+  if (report.converged || condensed.num_floating_unknowns() == 0 || report.stop_cause == StopCause::Singular)
+    return report;
   // With a floating layer the path depends on the complementarity parameter (SolverOptions);
   // a second attempt with a ten times smaller one rescued the dovetail's case (h) at ε = 1e-4.
   SolverOptions retry = options;

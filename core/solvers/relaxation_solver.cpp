@@ -112,7 +112,13 @@ SolveReport solve_relaxation(const ContactProblem& problem, const SolverOptions&
     k_T[k] = problem.law(k).tangential_active() ? problem.law(k).K_T() * problem.node(k).length : 0.0;
   }
   Eigen::VectorXd diag(n);
-  for (int i = 0; i < n; ++i) diag[i] = K.coeff(i, i);
+  for (int i = 0; i < n; ++i) {
+    diag[i] = K.coeff(i, i);
+    // Gauss-Seidel divides by the diagonal: a DOF without stiffness makes the system singular.
+    if (!(diag[i] > 0) || !std::isfinite(diag[i]))
+      throw std::runtime_error("singular system: free DOF " + std::to_string(i) + " has diagonal stiffness " +
+                               std::to_string(diag[i]) + " (a body without stiffness?)");
+  }
 
   Eigen::VectorXd v = Eigen::VectorXd::Zero(n);
   // Interface forces from the current iterate: at an interface unknown the interface term
@@ -160,6 +166,7 @@ SolveReport solve_relaxation(const ContactProblem& problem, const SolverOptions&
         report.converged = true;
         break;
       }
+      if (!std::isfinite(report.residual.value())) break;  // NaN or Inf: no sweep will recover
     }
   }
   report.iterations = sweep;
@@ -167,9 +174,13 @@ SolveReport solve_relaxation(const ContactProblem& problem, const SolverOptions&
   report.r = interface_forces();
   report.residual = contact_residual(problem, report.u, report.r);
   report.converged = report.residual.value() <= options.tolerance;
+  const bool finite = report.u.allFinite() && report.r.allFinite() && std::isfinite(report.residual.value());
+  report.stop_cause = !finite ? StopCause::NonFinite : report.converged ? StopCause::Converged : StopCause::IterationCap;
+  report.converged = report.stop_cause == StopCause::Converged;
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream msg;
-  msg << (report.converged ? "converged" : "NOT converged (iteration cap)") << " after " << sweep
+  msg << (report.converged ? "converged" : std::string("NOT converged (") + to_string(report.stop_cause) + ")")
+      << " after " << sweep
       << " sweeps (omega " << omega << ", rho updated every " << check_every << " sweeps), residual "
       << report.residual.value() << " (tolerance " << options.tolerance << ")";
   report.message = msg.str();

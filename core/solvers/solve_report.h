@@ -8,6 +8,17 @@
 
 namespace thinlayer {
 
+// Why a solve stopped. Every solve that does not converge names one of these (SPEC §1.5; the
+// stress tests of S5 check that none stops without a cause).
+enum class StopCause {
+  Converged,       // the SPEC residual reached the tolerance, with a unique answer
+  IterationCap,    // the iteration cap was reached first
+  Singular,        // the answer is not unique: a floating body is held by none of its contacts
+  LossOfAccuracy,  // the statuses settled but the linear solve could not reach the tolerance
+  NonFinite,       // NaN or Inf appeared in the iterate
+};
+const char* to_string(StopCause cause);
+
 struct SolveReport {
   std::string solver;           // "fast" | "relaxation"
   Eigen::VectorXd u;            // free DOFs, mm
@@ -16,6 +27,11 @@ struct SolveReport {
   Residual residual;            // SPEC §1.5, evaluated on (u, r) by contact_residual()
   double tolerance = 0;         // the residual the solve aimed for
   bool converged = false;
+  StopCause stop_cause = StopCause::IterationCap;
+  // An estimate of the condition number of the last linear system the solver solved (fast:
+  // 1 / LAPACK-style rcond of the equilibrated active-set matrix); 0 when not estimated.
+  // Round-off limits the attainable residual to about 1e-16 times it.
+  double condition_estimate = 0;
   double wall_time_s = 0;       // the solve alone (factorisation reported separately)
   std::string message;          // why it stopped, in one line
 };

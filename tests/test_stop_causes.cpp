@@ -1,0 +1,111 @@
+// Every solve that does not converge names its cause (SolveReport::stop_cause), and no result
+// with a NaN or Inf is ever written (issue 5, the stress tests of S5).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include <unistd.h>
+
+#include "cases/bar/bar.h"
+#include "core/io/scene_record.h"
+#include "core/solvers/fast_solver.h"
+#include "core/solvers/relaxation_solver.h"
+
+namespace thinlayer {
+namespace {
+
+const InterfaceLaw compliant = InterfaceLaw::make(450, 540, 1.0);  // daN/mm³
+
+bar::MeshOptions small_bar(double load_scale = 1) {
+  bar::MeshOptions mesh;
+  mesh.nx = mesh.ny = 8;
+  mesh.load_scale = load_scale;
+  return mesh;
+}
+
+TEST(StopCause, ConvergedSolvesSayConverged) {
+  const Model model = bar::make_model(small_bar());
+  const LinearSystem system(model);
+  const ContactProblem problem(system, {bar::make_interface(model, compliant)});
+  for (const SolveReport& r : {solve_fast(problem), solve_relaxation(problem)}) {
+    SCOPED_TRACE(r.solver);
+    EXPECT_TRUE(r.converged) << r.message;
+    EXPECT_EQ(r.stop_cause, StopCause::Converged);
+  }
+}
+
+TEST(StopCause, ACappedSolveSaysIterationCapNotConverged) {
+  const Model model = bar::make_model(small_bar());
+  const LinearSystem system(model);
+  const ContactProblem problem(system, {bar::make_interface(model, compliant)});
+  SolverOptions capped;
+  capped.max_iterations = 1;
+  const SolveReport fast = solve_fast(problem, capped);
+  capped.max_iterations = 5;
+  const SolveReport relaxation = solve_relaxation(problem, capped);
+  for (const SolveReport& r : {fast, relaxation}) {
+    SCOPED_TRACE(r.solver);
+    EXPECT_FALSE(r.converged);
+    EXPECT_EQ(r.stop_cause, StopCause::IterationCap);
+    EXPECT_NE(r.message.find("iteration cap"), std::string::npos) << r.message;
+  }
+  EXPECT_GT(fast.condition_estimate, 1.0);  // estimated, and a condition number is >= 1
+}
+
+TEST(StopCause, AFloatingLayerWithEveryContactOpenIsSingular) {
+  // Reversed loads lift the bar: the layer under AD touches neither the bar nor the ground.
+  bar::LayerOptions layer;
+  layer.eps = 1e-3;
+  layer.lambda_eps = layer.eps * 450;
+  layer.mu_eps = layer.eps * 540;
+  const Model model = bar::make_layer_model(small_bar(-1), layer);
+  const LinearSystem system(model);
+  const ContactProblem problem(system, bar::make_layer_interfaces(model));
+  const SolveReport r = solve_fast(problem);
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.stop_cause, StopCause::Singular);
+  EXPECT_NE(r.message.find("held by none of its contacts"), std::string::npos) << r.message;
+  // The residual alone would have passed: the answer exists, it is not unique.
+  EXPECT_LE(r.residual.value(), 1e-10);
+  EXPECT_TRUE(r.u.allFinite());
+
+  // With the loads the right way round the same layer is held, and the solve converges.
+  const Model held_model = bar::make_layer_model(small_bar(1), layer);
+  const LinearSystem held_system(held_model);
+  const ContactProblem held(held_system, bar::make_layer_interfaces(held_model));
+  const SolveReport h = solve_fast(held);
+  EXPECT_TRUE(h.converged) << h.message;
+  EXPECT_EQ(h.stop_cause, StopCause::Converged);
+}
+
+TEST(StopCause, ASceneWithNaNIsNeverWritten) {
+  const Model model = bar::make_model(small_bar());
+  const LinearSystem system(model);
+  const ContactProblem problem(system, {bar::make_interface(model, compliant)});
+  SolveReport report = solve_fast(problem);
+  report.u[3] = std::numeric_limits<double>::quiet_NaN();
+  const SceneRecord record = record_scene("poisoned", model, problem, report, 1e-6);
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("thinlayer-nan-" + std::to_string(::getpid()) + ".h5");
+  {
+    H5Writer out(file.string());
+    try {
+      write_scene(out, record);
+      FAIL() << "a NaN was written";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+    }
+  }  // not committed: nothing is left behind
+  EXPECT_FALSE(std::filesystem::exists(file));
+}
+
+TEST(StopCause, EveryCauseHasAName) {
+  for (StopCause c : {StopCause::Converged, StopCause::IterationCap, StopCause::Singular, StopCause::LossOfAccuracy,
+                      StopCause::NonFinite})
+    EXPECT_STRNE(to_string(c), "unknown");
+}
+
+}  // namespace
+}  // namespace thinlayer
