@@ -19,6 +19,7 @@
 #include "studies/dovetail_study.h"
 #include "studies/report_runner.h"
 #include "studies/results_file.h"
+#include "studies/skip_study.h"
 #include "studies/stress_study.h"
 #include "studies/table3_study.h"
 #include "studies/thresholds_study.h"
@@ -158,6 +159,14 @@ std::vector<Check> run_asymptotic_studies(const StudyInput& in, bool s2, bool s3
   return checks;
 }
 
+// S5's timings: run time against error, and what each shortcut of the fast solver saves.
+std::vector<Check> run_timing_studies(const StudyInput& in, H5Writer* out) {
+  std::vector<Check> checks = run_timing_study(in.timing, out);
+  const std::vector<Check> skip = run_skip_study(SkipStudyOptions{in.timing.repeats}, out);
+  checks.insert(checks.end(), skip.begin(), skip.end());
+  return checks;
+}
+
 int report_checks(const std::vector<Check>& checks) {
   int failed = 0;
   for (const Check& c : checks)
@@ -195,7 +204,7 @@ int command_study(const std::vector<std::string>& argv) {
     std::vector<Check> checks;
     if (name == "table3") checks = run_table3_study(in.table3, out.get());
     else if (name == "dovetail") checks = run_dovetail_study(in.dovetail, out.get());
-    else if (name == "timing") checks = run_timing_study(in.timing, out.get());
+    else if (name == "timing") checks = run_timing_studies(in, out.get());
     else if (name == "stress") checks = run_stress_study(in.stress, out.get());
     else
       checks = run_asymptotic_studies(in, name == "convergence" || name == "validity" || name == "asymptotics",
@@ -236,7 +245,7 @@ int command_verify(const std::vector<std::string>& argv) {
     };
     timed("table3", [&] { return run_table3_study(in.table3, out.get()); });
     timed("asymptotics", [&] { return run_asymptotic_studies(in, true, true, true, out.get()); });
-    timed("timing", [&] { return run_timing_study(in.timing, out.get()); });
+    timed("timing", [&] { return run_timing_studies(in, out.get()); });
     timed("stress", [&] { return run_stress_study(in.stress, out.get()); });
     write_checks(*out, checks);
     out->commit();

@@ -127,3 +127,41 @@ TEST_F(SmallBar, ResidualDetectsAViolatedLaw) {
 
 }  // namespace
 }  // namespace thinlayer
+
+namespace thinlayer {
+namespace {
+
+// Skip what a scene doesn't need (issue 5): each shortcut changes the cost, never the answer.
+TEST_F(SmallBar, AWarmStartFromTheAnswerIsOneLinearSolve) {
+  for (const InterfaceLaw& law : laws) {
+    SCOPED_TRACE(std::string("law case ") + law.table1_case());
+    const ContactProblem p = problem(law);
+    const SolveReport cold = solve_fast(p);
+    ASSERT_TRUE(cold.converged) << cold.message;
+    SolverOptions warm;
+    warm.initial_r = cold.r;
+    const SolveReport again = solve_fast(p, warm);
+    ASSERT_TRUE(again.converged) << again.message;
+    EXPECT_EQ(again.iterations, 1);
+    EXPECT_LE(relative_distance(again.u, cold.u), 1e-12);
+  }
+}
+
+TEST_F(SmallBar, FrictionlessRowsLeftOutOrKeptGiveTheSameAnswer) {
+  for (const InterfaceLaw& law : {InterfaceLaw::make(inf, 0, 1.0), InterfaceLaw::make(450, 0, 1.0),
+                                  InterfaceLaw::make(450, 540, 0.0)}) {
+    SCOPED_TRACE(std::string("law case ") + law.table1_case() + ", f = " + std::to_string(law.friction));
+    const ContactProblem p = problem(law);
+    const SolveReport skipped = solve_fast(p);
+    SolverOptions kept;
+    kept.skip_frictionless_rows = false;
+    const SolveReport full = solve_fast(p, kept);
+    ASSERT_TRUE(skipped.converged) << skipped.message;
+    ASSERT_TRUE(full.converged) << full.message;
+    EXPECT_LE(relative_distance(full.u, skipped.u), 1e-10);
+    EXPECT_EQ(full.r(Eigen::seq(1, Eigen::last, 2)).norm(), 0.0);  // no tangential force either way
+  }
+}
+
+}  // namespace
+}  // namespace thinlayer

@@ -25,14 +25,16 @@ struct Condensed {
   std::vector<double> friction;
 };
 
-Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, double complementarity_scale) {
+Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, double complementarity_scale,
+                   bool skip_frictionless_rows) {
   const int m = problem.num_nodes();
   Condensed c{ci.W(), ci.g0(), ci.B_L(), ci.S(), ci.f_L(), Eigen::VectorXd::Zero(2 * m), {}, {}, {}};
   for (int k = 0; k < m; ++k) {
     const InterfaceLaw& law = problem.law(k);
     c.normal.push_back(law.normal_active());
-    c.tangential.push_back(law.normal_active() && law.tangential_active());
-    c.friction.push_back(law.friction);
+    // Without the skip, a frictionless node keeps its tangential row as a slide with r_T = 0.
+    c.tangential.push_back(law.normal_active() && (law.tangential_active() || !skip_frictionless_rows));
+    c.friction.push_back(law.tangential_active() ? law.friction : 0.0);
     for (int row = 0; row < 2; ++row) {
       const double C = problem.compliance()[2 * k + row];
       if (std::isfinite(C)) c.W(2 * k + row, 2 * k + row) += C;
@@ -304,14 +306,16 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   SolveReport report;
   report.solver = "fast";
   report.tolerance = options.tolerance;
-  const Condensed c = condense(problem, condensed, options.complementarity_scale);
+  const Condensed c = condense(problem, condensed, options.complementarity_scale, options.skip_frictionless_rows);
   const int nw = floating_unknowns(c);
   // A floating body needs proximal steps, each a few Newton steps: allow more of them.
   const int max_iterations = options.max_iterations > 0 ? options.max_iterations : nw ? 1000 : 200;
 
   Eigen::VectorXd r = Eigen::VectorXd::Zero(c.g0.size());
   Eigen::VectorXd w = Eigen::VectorXd::Zero(nw);
-  std::vector<Active> statuses = guess_statuses(c, r, c.g0);
+  if (options.initial_r.size() == r.size()) r = options.initial_r;
+  if (options.initial_w.size() == w.size()) w = options.initial_w;
+  std::vector<Active> statuses = guess_statuses(c, r, jump_part(c, r, w));
   ActiveSetRun run;
   int proximal_steps = 0;
   if (nw == 0) {
@@ -362,6 +366,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   }
 
   report.r = r;
+  report.w = w;
   report.u = condensed.displacement(problem, r, w);
   report.residual = contact_residual(problem, report.u, report.r);
   report.converged = report.residual.value() <= options.tolerance;

@@ -23,6 +23,7 @@ struct SolveReport {
   std::string solver;           // "fast" | "relaxation"
   Eigen::VectorXd u;            // free DOFs, mm
   Eigen::VectorXd r;            // interface forces (r_N, r_T) per node, daN per unit thickness
+  Eigen::VectorXd w;            // fast solver: the floating bodies' interface DOFs, mm (empty if none)
   int iterations = 0;           // fast: active-set (Newton) steps; relaxation: Gauss-Seidel sweeps
   Residual residual;            // SPEC §1.5, evaluated on (u, r) by contact_residual()
   double tolerance = 0;         // the residual the solve aimed for
@@ -50,6 +51,14 @@ struct SolverOptions {
   // the bar's layer mode (6 rows × ε = 1e-2, 1e-3, 1e-4) 1 converged in 14 of 18 scenes, 0.1 in
   // 15, 0.01 and 0.001 in all 18; limit-mode scenes converge the same with any of them.
   double complementarity_scale = 0.01;
+  // Fast solver only: a warm start — interface forces r and floating-body DOFs w of a nearby
+  // solution (a previous law on the same bulk, the previous ε of a sweep). Empty: from rest.
+  // The first active set is guessed from them; with the right statuses the solve is a single
+  // linear solve.
+  Eigen::VectorXd initial_r, initial_w;
+  // Fast solver only: leave out the tangential rows of nodes whose law has no tangential
+  // interaction (K_T = 0 or f = 0: cases a, c, e). Off only to measure what it saves.
+  bool skip_frictionless_rows = true;
 };
 
 }  // namespace thinlayer
