@@ -28,6 +28,7 @@ import section_header  # noqa: E402
 import section_layer_stiffness  # noqa: E402
 import section_table3  # noqa: E402
 import section_tables12  # noqa: E402
+import section_stress  # noqa: E402
 import section_timing  # noqa: E402
 import section_validity  # noqa: E402
 from checks import load_checks  # noqa: E402
@@ -55,6 +56,7 @@ SECTIONS = (
     ("convergence", "Convergence", section_convergence.render),
     ("validity", "Validity", section_validity.render),
     ("timing", "Run time", section_timing.render),
+    ("stress", "Stress tests", section_stress.render),
 )
 
 

@@ -10,5 +10,9 @@ namespace thinlayer {
 std::string counts_text(const StatusCount& c);
 // Scientific notation with the given number of decimals, e.g. sci(1.5e-11, 2) = "1.50e-11".
 std::string sci(double x, int decimals = 3);
+// Fixed notation, e.g. fixed(2.345, 2) = "2.35".
+std::string fixed(double x, int decimals);
+// The shortest natural form (printf %g), e.g. plain(0.025) = "0.025", plain(1e-4) = "0.0001".
+std::string plain(double x);
 
 }  // namespace thinlayer

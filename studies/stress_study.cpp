@@ -44,12 +44,6 @@ SolverOptions capped(int max_iterations, double tolerance = 1e-10) {
   return o;
 }
 
-std::string g(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 // The scenes, group by group. Bar scenes use the paper's 32 x 32 Q1 mesh unless said.
 std::vector<StressScene> stress_scenes(const StressStudyOptions& o) {
   const Table3Row row1 = load_table3_paper().at(0);
@@ -73,11 +67,11 @@ std::vector<StressScene> stress_scenes(const StressStudyOptions& o) {
   // fall 24 decades below the adherents'.
   const std::vector<double> thin = o.quick ? std::vector<double>{} : std::vector<double>{1e-6, 1e-8};
   for (double eps : thin)
-    scenes.push_back({"thickness.bar-layer-eps" + g(eps), "thickness",
-                      "bar layer, Table 3 row 1, eps " + g(eps) + " mm", "",
+    scenes.push_back({"thickness.bar-layer-eps" + plain(eps), "thickness",
+                      "bar layer, Table 3 row 1, eps " + plain(eps) + " mm", "",
                       layer_bar({}, row1.lambda_bar, row1.mu_bar, eps, "table3-row-1", capped(o.layer_cap))});
   for (double eps : thin)
-    scenes.push_back({"thickness.dovetail-layer-d-eps" + g(eps), "thickness", "dovetail layer, case d, eps " + g(eps),
+    scenes.push_back({"thickness.dovetail-layer-d-eps" + plain(eps), "thickness", "dovetail layer, case d, eps " + plain(eps),
                       "", [=] {
                         DovetailLimitBulk bulk;
                         return from(solve_dovetail_layer(bulk, dovetail::exponents_of('d'), eps, "d",
@@ -87,16 +81,16 @@ std::vector<StressScene> stress_scenes(const StressStudyOptions& o) {
   // Stiffness contrast: the layer (or the limit law's springs) c times the adherents' μ_m.
   for (double c : o.quick ? std::vector<double>{1e-6, 1e-12} : std::vector<double>{1e-3, 1e-6, 1e-9, 1e-12}) {
     const double eps = 1e-3;  // mm; λ_ε = c λ_m, μ_ε = c μ_m
-    scenes.push_back({"contrast.bar-layer-c" + g(c), "contrast", "bar layer, eps 1e-3, mu_eps/mu_m = " + g(c), "",
-                      layer_bar({}, c * bar::lambda_m / eps, c * bar::mu_m / eps, eps, "contrast-" + g(c), {})});
+    scenes.push_back({"contrast.bar-layer-c" + plain(c), "contrast", "bar layer, eps 1e-3, mu_eps/mu_m = " + plain(c), "",
+                      layer_bar({}, c * bar::lambda_m / eps, c * bar::mu_m / eps, eps, "contrast-" + plain(c), {})});
   }
   for (double c : {1e-6, 1e-12})
     for (const auto& [solver, options] : both) {
       // K per unit area c μ_m / L: springs c times as stiff as the bar over its own size.
       const InterfaceLaw law = InterfaceLaw::make(c * bar::lambda_m / bar::side, c * bar::mu_m / bar::side, 1.0);
-      scenes.push_back({"contrast.bar-limit-c" + g(c) + "." + to_string(solver), "contrast",
-                        "bar limit, springs K = " + g(c) + " x stiffness of the bar, " + to_string(solver), "",
-                        limit_bar({}, law, "contrast-" + g(c), solver, options)});
+      scenes.push_back({"contrast.bar-limit-c" + plain(c) + "." + to_string(solver), "contrast",
+                        "bar limit, springs K = " + plain(c) + " x stiffness of the bar, " + to_string(solver), "",
+                        limit_bar({}, law, "contrast-" + plain(c), solver, options)});
     }
 
   // The project claims convergence for its fast solver on every scene below. The relaxation is
@@ -107,8 +101,8 @@ std::vector<StressScene> stress_scenes(const StressStudyOptions& o) {
   // Friction from none to ten: the slide/stick split moves from all slide to mostly stick.
   for (double f : {0.0, 0.01, 0.1, 1.0, 10.0})
     for (const auto& [solver, options] : both)
-      scenes.push_back({"friction.f" + g(f) + "." + to_string(solver), "friction",
-                        "bar limit, row 1, f = " + g(f) + ", " + to_string(solver), claim(solver),
+      scenes.push_back({"friction.f" + plain(f) + "." + to_string(solver), "friction",
+                        "bar limit, row 1, f = " + plain(f) + ", " + to_string(solver), claim(solver),
                         limit_bar({}, InterfaceLaw::make(row1.lambda_bar, row1.mu_bar, f), "table3-row-1", solver,
                                   options)});
 
@@ -120,9 +114,9 @@ std::vector<StressScene> stress_scenes(const StressStudyOptions& o) {
         bar::MeshOptions mesh;
         mesh.element = element;
         mesh.distortion = d;
-        scenes.push_back({"distortion." + std::string(to_string(element)) + "-" + g(d) + "." + to_string(solver),
+        scenes.push_back({"distortion." + std::string(to_string(element)) + "-" + plain(d) + "." + to_string(solver),
                           "distortion",
-                          "bar limit, row 1, " + std::string(to_string(element)) + " distorted " + g(d) + ", " +
+                          "bar limit, row 1, " + std::string(to_string(element)) + " distorted " + plain(d) + ", " +
                               to_string(solver),
                           claim(solver), limit_bar(mesh, row1_law, "table3-row-1", solver, options)});
       }

@@ -1,8 +1,15 @@
 #pragma once
-// Study S5, quick version (SPEC §3): wall time against error for each solver on the bar (Table 3
-// row 1, limit mode) at several mesh levels, against a tightly converged reference, and the
-// ratio of each solve to one linear solve (factorisation + solve) of the same mesh.
-// The full S5 (Siconos peers, the dovetail's levels, layer mode, stress tests) is not here.
+// Study S5, run time against error (SPEC §3; issue 5), for each solver and mesh level:
+//   - the bar (Table 3 row 1, limit mode, Q1 n × n with n contact nodes): the fast solver
+//     (condensation + active set, and its solve phase alone), the paper's relaxation at a
+//     sweep of tolerances, and two peers on the identical condensed problem, Siconos' fc2d
+//     NSGS and Lemke solvers;
+//   - the dovetail (case d): limit mode at three element sizes along S, layer mode at ε = 1e-2
+//     and 1e-4;
+// each against a tightly converged reference and as a ratio to one linear solve
+// (factorisation + solve) of the same mesh; then how time grows with the number of unknowns
+// (the exponent of a log–log fit) and the issue's targets, met or not. Times are medians.
+// "Skip what a scene doesn't need" is its own study (studies/skip_study.h).
 #include <vector>
 
 #include "core/io/h5_writer.h"
@@ -11,12 +18,19 @@
 namespace thinlayer {
 
 struct TimingStudyOptions {
-  std::vector<int> fast_levels = {32, 64, 128};        // contact nodes = elements along AD
+  std::vector<int> fast_levels = {32, 64, 128, 256, 512};  // contact nodes = elements along AD
   std::vector<int> relaxation_levels = {32, 64};
   std::vector<double> relaxation_tolerances = {1e-4, 1e-6, 1e-8, 1e-10};
-  int relaxation_cap = 50000;                           // sweeps
-  int repeats = 3;                                      // medians of this many runs
-  double reference_tolerance = 1e-12;                   // the fast solver's, for the reference
+  int relaxation_cap = 50000;                                // sweeps
+  std::vector<int> peer_levels = {32, 64, 128, 256};
+  std::vector<double> peer_tolerances = {1e-8, 1e-10};
+  std::vector<double> dovetail_h = {0.05, 0.025, 0.0125};    // element size along S (L = 1)
+  std::vector<double> layer_eps = {1e-2, 1e-4};              // dovetail layer mode, case d, h = 0.025
+  int repeats = 3;                                           // medians of this many runs
+  double reference_tolerance = 1e-12;                        // the fast solver's, for the reference
+
+  // The reduced set `verify` runs (about a minute).
+  static TimingStudyOptions quick();
 };
 
 std::vector<Check> run_timing_study(const TimingStudyOptions& options, H5Writer* out);

@@ -197,6 +197,42 @@ def write_timing(f):
     t["time_s"], t["error"] = np.array([1e-3, 1e-2, 0.1, 1.0]), np.array([1e-2, 1e-3, 1e-2, 1e-3])
 
 
+def write_timing_extras(f):
+    """The groups the full S5 adds: meshes and ratios, linear solves, growth fits, targets, shortcuts."""
+    t = f["studies/timing"]
+    t.create_dataset("mesh", data=strings(["bar-32", "bar-64"] * 2), dtype=STR)
+    t["unknowns"], t["tolerance"] = np.array([2144, 8384] * 2), np.array([1e-10] * 4)
+    t["converged"], t["ratio_to_linear"] = np.array([1, 1, 1, 1]), np.array([2.0, 3.0, 20.0, 30.0])
+    lin = t.create_group("linear")
+    lin.create_dataset("level", data=strings(["bar-32", "bar-64"]), dtype=STR)
+    lin["unknowns"], lin["time_s"] = np.array([2144, 8384]), np.array([5e-4, 3e-3])
+    sc = t.create_group("scaling")
+    sc.create_dataset("solver", data=strings(["fast", "linear"]), dtype=STR)
+    sc["exponent"], sc["exponent_stderr"], sc["points"] = np.array([1.5, 1.3]), np.array([0.1, 0.1]), np.array([3, 3])
+    tg = t.create_group("targets")
+    for name, values in (("target", ["limit-mode solve / linear", "relaxation / fast"]), ("goal", ["<= 1.5", ">= 100"]),
+                         ("measured", ["1.2", "9.7"])):
+        tg.create_dataset(name, data=strings(values), dtype=STR)
+    tg["met"] = np.array([1, 0])
+    sk = t.create_group("skip")
+    sk.create_dataset("shortcut", data=strings(["factorisation_reuse_table3"]), dtype=STR)
+    sk.create_dataset("scenes", data=strings(["bar, 6 rows"]), dtype=STR)
+    sk["time_with_s"], sk["time_without_s"], sk["saving"], sk["difference"] = [0.02], [0.1], [5.0], [0.0]
+
+
+def write_stress(f):
+    """Two stress scenes: one converged as claimed, one that wrote NaN (which the report must flag)."""
+    g = f.create_group("studies/stress")
+    for name, values in (("scene", ["friction.f1.fast", "thickness.bar-layer-eps1e-08"]),
+                         ("group", ["friction", "thickness"]),
+                         ("description", ["bar limit, f = 1", "bar layer, eps 1e-8"]), ("solver", ["fast", "fast"]),
+                         ("outcome", ["converged", "non-finite values"]), ("expected", ["converged", ""]),
+                         ("message", ["converged after 7 steps", "NaN in the iterate"]), ("counts", ["3/14/15", ""])):
+        g.create_dataset(name, data=strings(values), dtype=STR)
+    g["iterations"], g["residual"] = np.array([7, 300]), np.array([1e-13, -1.0])
+    g["condition_estimate"], g["time_s"], g["finite"] = np.array([400.0, 1e18]), np.array([0.02, 7.0]), np.array([1, 0])
+
+
 def write_checks(f, checks):
     g = f.create_group("checks")
     g.create_dataset("id", data=strings([c[0] for c in checks]), dtype=STR)
@@ -240,6 +276,8 @@ def write_results(path, layout=True, failing=False, complete=True):
                                     passed=True)
         write_validity_and_thresholds(f)
         write_timing(f)
+        write_timing_extras(f)
+        write_stress(f)
 
 
 # --- The tests -----------------------------------------------------------------------------
@@ -289,6 +327,11 @@ class ReportTest(unittest.TestCase):
                          sorted(os.path.basename(s) for s in images))
         self.assertEqual(re.findall(r"[^>]*: not in this results file", html), [])
         self.assertIn("5 checks, all pass", html)
+        # The stress scene that wrote NaN is flagged; the converged one is not.
+        self.assertRegex(html, r'<tr class="failrow">(<td[^>]*>[^<]*</td>){1}<td class="l">bar layer, eps 1e-8<')
+        self.assertNotRegex(html, r'<tr class="failrow">(<td[^>]*>[^<]*</td>){1}<td class="l">bar limit, f = 1<')
+        self.assertIn("Targets of issue 5", html)
+        self.assertIn("factorisation_reuse_table3", html)
         self.assertNothingLeftBehind()
 
     def test_without_layout_attributes_nothing_is_written(self):
@@ -337,6 +380,7 @@ class ReportTest(unittest.TestCase):
         with open(os.path.join(out, "index.html"), encoding="utf-8") as page:
             html = page.read()
         for absent in ("/studies/convergence", "/studies/validity", "/studies/thresholds", "/studies/timing",
+                       "/studies/stress",
                        "/environment", "/studies/table3/sensitivity"):
             self.assertRegex(html, re.escape(absent) + r"[^<]*\): not in this results file")
 
