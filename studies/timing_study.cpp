@@ -120,6 +120,7 @@ void bar_level(const TimingStudyOptions& o, int n, std::vector<Row>& rows, std::
       for (double tol : o.peer_tolerances) {
         SolverOptions opt;
         opt.tolerance = tol;
+        opt.max_iterations = o.peer_cap;
         SolveReport r;
         const double t = median_time(o.repeats, [&] { r = solve_siconos(problem, bulk.condensed(), peer, opt); });
         rows.push_back(timed_row(to_string(peer), level, problem, tol, t, linear, r, reference.u));

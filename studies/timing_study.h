@@ -23,7 +23,10 @@ struct TimingStudyOptions {
   std::vector<double> relaxation_tolerances = {1e-4, 1e-6, 1e-8, 1e-10};
   int relaxation_cap = 50000;                                // sweeps
   std::vector<int> peer_levels = {32, 64, 128, 256};
-  std::vector<double> peer_tolerances = {1e-8, 1e-10};
+  std::vector<double> peer_tolerances = {1e-10};
+  // NSGS sweeps / Lemke pivots. NSGS does not converge on the bar from 64 contact nodes on
+  // (f = 1; tests/test_siconos_peers.cpp): a cap of 1e4 keeps its 256-node run near 10 s.
+  int peer_cap = 10000;
   std::vector<double> dovetail_h = {0.05, 0.025, 0.0125};    // element size along S (L = 1)
   std::vector<double> layer_eps = {1e-2, 1e-4};              // dovetail layer mode, case d, h = 0.025
   int repeats = 3;                                           // medians of this many runs
