@@ -73,8 +73,10 @@ CondensedInterface::CondensedInterface(const ContactProblem& problem) {
         gamma.push_back(static_cast<int>(a));
         gamma_dofs.push_back(supported_[a]);
       }
-    const bool all_supported = static_cast<int>(supported_.size()) == n;  // K_AA = K: no copy
-    factor_supported_ = std::make_shared<SparseCholesky>(all_supported ? K : block(K, supported_, supported_), gamma);
+    if (static_cast<int>(supported_.size()) == n)  // K_AA = K: factor it without a copy
+      factor_supported_ = std::make_shared<SparseCholesky>(K, gamma);
+    else
+      factor_supported_ = std::make_shared<SparseCholesky>(block(K, supported_, supported_), gamma);
     const Eigen::MatrixXd B_G = Eigen::MatrixXd(block(B, all_indices(rows), gamma_dofs));
     const Eigen::MatrixXd Z = factor_supported_->trailing_factor().triangularView<Eigen::Lower>().solve(B_G.transpose());
     W_ = Z.transpose() * Z;
@@ -89,6 +91,10 @@ CondensedInterface::CondensedInterface(const ContactProblem& problem) {
     f_L_ = take(system.F(), floating_face_);
     if (!floating_interior_.empty()) {
       // The interior with its faces held is an ordinary supported problem: factor it.
+      // (Not the trailing-factor route of the supported part, with the faces last and a shift
+      // α on them, S = L_ff L_ffᵀ - αI: tried, it moved the bar's layer scene at ε = 1e-4 by
+      // 6e-8 relative through the layer's soft modes, and the interior being a few rows of
+      // nodes thick, its |f| banded solves cost less than the dense |f| × |f| factor.)
       factor_interior_ = std::make_shared<SparseCholesky>(block(K, floating_interior_, floating_interior_));
       K_if_ = block(K, floating_interior_, floating_face_);
       const Eigen::MatrixXd Y = factor_interior_->solve(Eigen::MatrixXd(K_if_));  // K_ii⁻¹ K_if
