@@ -1,6 +1,8 @@
 #pragma once
 // The bulk condensed onto the interface. The supported bodies are factored once (CHOLMOD):
-//   W = B_A K_AA⁻¹ B_Aᵀ   (the Delassus operator, mm/daN),   g₀ = B_A K_AA⁻¹ F_A + g_D  (mm).
+//   W = B_A K_AA⁻¹ B_Aᵀ   (the Delassus operator, mm/daN),   g₀ = B_A K_AA⁻¹ F_A + g_D  (mm),
+// W from the factor of K_AA's Schur complement onto the interface DOFs (ordered last in the
+// factorisation, see SparseCholesky::trailing_factor), at the cost of one factorisation.
 // A floating body (the thin layer, Body::floating) is never factored whole — its stiffness is
 // singular when its contacts open. Its interior is condensed onto its interface DOFs w:
 //   S w = f_L + B_Lᵀ r,   S = K_ff - K_fi K_ii⁻¹ K_if,   f_L = F_f - K_fi K_ii⁻¹ F_i,
@@ -33,6 +35,9 @@ class CondensedInterface {
   Eigen::VectorXd displacement(const ContactProblem& problem, const Eigen::VectorXd& r,
                                const Eigen::VectorXd& w) const;
   double setup_time_s() const { return setup_time_s_; }  // factorisations + condensation
+  // The smallest of the factors' SparseCholesky::rcond() (1 if none): a crude, optimistic
+  // estimate, for reporting a loss of accuracy.
+  double rcond() const;
 
  private:
   std::vector<int> supported_, floating_face_, floating_interior_;  // free DOF indices
