@@ -29,8 +29,9 @@ struct SolveReport {
   double tolerance = 0;         // the residual the solve aimed for
   bool converged = false;
   StopCause stop_cause = StopCause::IterationCap;
-  // An estimate of the condition number of the last linear system the solver solved (fast:
-  // 1 / LAPACK-style rcond of the equilibrated active-set matrix); 0 when not estimated.
+  // An estimate of the condition number of the linear systems the solver solved (fast: the
+  // larger of 1 / LAPACK-style rcond of the equilibrated final active-set matrix and 1 / CHOLMOD's
+  // rcond of the bulk factors; capped at 1e300); 0 when not estimated (relaxation).
   // Round-off limits the attainable residual to about 1e-16 times it.
   double condition_estimate = 0;
   double wall_time_s = 0;       // the solve alone (factorisation reported separately)
