@@ -30,7 +30,10 @@ struct TimingStudyOptions {
   std::vector<double> dovetail_h = {0.05, 0.025, 0.0125};    // element size along S (L = 1)
   std::vector<double> layer_eps = {1e-2, 1e-4};              // dovetail layer mode, case d, h = 0.025
   int repeats = 3;                                           // medians of this many runs
-  double reference_tolerance = 1e-12;                        // the fast solver's, for the reference
+  // The reference: the fast solver, whose last step is an exact linear solve of the settled
+  // statuses, at a residual ten times below any compared solve's. (1e-12 is below the
+  // residual's round-off floor on the finest bar: 1.8e-12 measured at 512 contact nodes.)
+  double reference_tolerance = 1e-11;
 
   // The reduced set `verify` runs (about a minute).
   static TimingStudyOptions quick();
