@@ -74,6 +74,18 @@ double linear_solve_time(const LinearSystem& system, int repeats, const std::str
   });
 }
 
+// The tight reference of one scene, and a check that it is tight.
+Eigen::VectorXd reference_solution(const ContactProblem& problem, const CondensedInterface& condensed,
+                                   const TimingStudyOptions& o, const std::string& level, std::vector<Check>& checks) {
+  SolverOptions tight;
+  tight.tolerance = o.reference_tolerance;
+  const SolveReport reference = solve_fast(problem, condensed, tight);
+  checks.push_back({"timing." + level + ".reference_converged", reference.converged,
+                    "residual <= " + sci(o.reference_tolerance, 0), sci(reference.residual.value(), 1),
+                    sci(o.reference_tolerance, 0)});
+  return reference.u;
+}
+
 bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
 
 // The bar, Table 3 row 1, limit mode: every solver at level n.
@@ -89,22 +101,17 @@ void bar_level(const TimingStudyOptions& o, int n, std::vector<Row>& rows, std::
   const Table3Row row1 = load_table3_paper().at(0);
   const ContactProblem problem(bulk.system(),
                                {bar::make_interface(bulk.model(), InterfaceLaw::make(row1.lambda_bar, row1.mu_bar, 1.0))});
-  SolverOptions tight;
-  tight.tolerance = o.reference_tolerance;
-  const SolveReport reference = solve_fast(problem, bulk.condensed(), tight);
-  checks.push_back({"timing." + level + ".reference_converged", reference.converged,
-                    "residual <= " + sci(o.reference_tolerance, 0), sci(reference.residual.value(), 1),
-                    sci(o.reference_tolerance, 0)});
+  const Eigen::VectorXd reference = reference_solution(problem, bulk.condensed(), o, level, checks);
 
   if (contains(o.fast_levels, n)) {
     SolveReport r;
     // As a user runs one scene: factorisation and condensation, then the active set.
     const double total = median_time(o.repeats, [&] { r = solve_fast(problem, CondensedInterface(problem)); });
-    rows.push_back(timed_row("fast", level, problem, SolverOptions{}.tolerance, total, linear, r, reference.u));
+    rows.push_back(timed_row("fast", level, problem, SolverOptions{}.tolerance, total, linear, r, reference));
     checks.push_back({"timing." + level + ".fast.error", r.converged && rows.back().error <= 1e-8,
                       "converged, error to the reference <= 1e-8", sci(rows.back().error, 1), "1e-8"});
     const double solve = median_time(o.repeats, [&] { r = solve_fast(problem, bulk.condensed()); });
-    rows.push_back(timed_row("fast-solve", level, problem, SolverOptions{}.tolerance, solve, linear, r, reference.u));
+    rows.push_back(timed_row("fast-solve", level, problem, SolverOptions{}.tolerance, solve, linear, r, reference));
   }
   if (contains(o.relaxation_levels, n))
     for (double tol : o.relaxation_tolerances) {
@@ -113,7 +120,7 @@ void bar_level(const TimingStudyOptions& o, int n, std::vector<Row>& rows, std::
       opt.max_iterations = o.relaxation_cap;
       SolveReport r;
       const double t = median_time(o.repeats, [&] { r = solve_relaxation(problem, opt); });
-      rows.push_back(timed_row("relaxation", level, problem, tol, t, linear, r, reference.u));
+      rows.push_back(timed_row("relaxation", level, problem, tol, t, linear, r, reference));
     }
   if (contains(o.peer_levels, n))
     for (PeerSolver peer : {PeerSolver::NSGS, PeerSolver::Lemke})
@@ -123,7 +130,7 @@ void bar_level(const TimingStudyOptions& o, int n, std::vector<Row>& rows, std::
         opt.max_iterations = o.peer_cap;
         SolveReport r;
         const double t = median_time(o.repeats, [&] { r = solve_siconos(problem, bulk.condensed(), peer, opt); });
-        rows.push_back(timed_row(to_string(peer), level, problem, tol, t, linear, r, reference.u));
+        rows.push_back(timed_row(to_string(peer), level, problem, tol, t, linear, r, reference));
       }
 }
 
@@ -142,15 +149,10 @@ void dovetail_levels(const TimingStudyOptions& o, std::vector<Row>& rows, std::v
     const double linear = linear_solve_time(bulk.system(), o.repeats, level);
     rows.push_back({"linear", level, 0, bulk.system().num_free(), 1, 0.0, linear, no_reference, 0.0, 1.0, true});
     const ContactProblem problem(bulk.system(), {dovetail::make_limit_interface(bulk.model(), dovetail::limit_law(d))});
-    SolverOptions tight;
-    tight.tolerance = o.reference_tolerance;
-    const SolveReport reference = solve_fast(problem, bulk.condensed(), tight);
-    checks.push_back({"timing." + level + ".reference_converged", reference.converged,
-                      "residual <= " + sci(o.reference_tolerance, 0), sci(reference.residual.value(), 1),
-                      sci(o.reference_tolerance, 0)});
+    const Eigen::VectorXd reference = reference_solution(problem, bulk.condensed(), o, level, checks);
     SolveReport r;
     const double total = median_time(o.repeats, [&] { r = solve_fast(problem, CondensedInterface(problem)); });
-    rows.push_back(timed_row("fast", level, problem, SolverOptions{}.tolerance, total, linear, r, reference.u));
+    rows.push_back(timed_row("fast", level, problem, SolverOptions{}.tolerance, total, linear, r, reference));
 
     if (h != dovetail::MeshOptions{}.h_interface) continue;
     for (double eps : o.layer_eps) {
