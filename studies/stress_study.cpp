@@ -162,7 +162,7 @@ bool all_finite(const SolveReport& r) {
 std::vector<Check> run_stress_study(const StressStudyOptions& options, H5Writer* out) {
   const std::vector<StressScene> scenes = stress_scenes(options);
   std::printf("\nStress tests (S5): every scene converges to its residual or stops with a named cause; no NaN/Inf\n\n");
-  std::printf("%-34s %-11s %-17s %6s %10s %10s %8s %-11s %s\n", "scene", "solver", "outcome", "it", "residual",
+  std::printf("%-40s %-11s %-17s %6s %10s %10s %8s %-11s %s\n", "scene", "solver", "outcome", "it", "residual",
               "condition", "time[s]", "gap/sl/st", "expected");
   std::vector<Check> checks;
   ColumnTable table;
@@ -198,8 +198,9 @@ std::vector<Check> run_stress_study(const StressStudyOptions& options, H5Writer*
                       ""});
     if (!scene.expected.empty())
       checks.push_back({"stress." + scene.id + ".expected", o.outcome == scene.expected, scene.expected, o.outcome, ""});
-    std::printf("%-34s %-11s %-17s %6d %10s %10s %8.2f %-11s %s\n", scene.id.substr(0, 34).c_str(), o.solver.c_str(),
-                o.outcome.c_str(), o.iterations, sci(o.residual, 1).c_str(), o.condition > 0 ? sci(o.condition, 1).c_str() : "-", o.time_s,
+    const std::string condition = o.condition > 0 ? sci(o.condition, 1) : "-";
+    std::printf("%-40s %-11s %-17s %6d %10s %10s %8.2f %-11s %s\n", scene.id.c_str(), o.solver.c_str(),
+                o.outcome.c_str(), o.iterations, sci(o.residual, 1).c_str(), condition.c_str(), o.time_s,
                 o.counts.c_str(), scene.expected.empty() ? "-" : scene.expected.c_str());
     table.add("scene", scene.id);
     table.add("group", scene.group);

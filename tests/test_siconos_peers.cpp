@@ -114,6 +114,7 @@ TEST_F(SiconosPeers, NsgsStopsOnItsOwnCriterionBeforeOurs) {
   EXPECT_FALSE(same.converged) << same.message;
   EXPECT_GT(same.residual.value(), 10 * options.tolerance) << same.message;
   EXPECT_NE(same.message.find("NOT converged: fc2d_nsgs_dense info 0"), std::string::npos) << same.message;
+  EXPECT_EQ(same.stop_cause, StopCause::LossOfAccuracy);  // stopped on its own criterion, not its cap
 
   options.tolerance = 1e-13;
   const SolveReport tighter = solve_siconos(p, bulk->condensed(), PeerSolver::NSGS, options);
@@ -136,6 +137,8 @@ TEST_F(SiconosPeers, SayWhenTheyHitTheIterationCap) {
   EXPECT_EQ(lemke.iterations, 3);
   EXPECT_GT(lemke.residual.value(), 1e-3);
   EXPECT_NE(lemke.message.find("NOT converged: fc2d_lexicolemke"), std::string::npos) << lemke.message;
+  EXPECT_EQ(nsgs.stop_cause, StopCause::IterationCap);
+  EXPECT_EQ(lemke.stop_cause, StopCause::IterationCap);
 }
 
 TEST_F(SiconosPeers, FreeLawIsSolvedWithoutCallingThePeer) {

@@ -145,6 +145,9 @@ TEST_F(SmallBar, AWarmStartFromTheAnswerIsOneLinearSolve) {
     EXPECT_EQ(again.iterations, 1);
     EXPECT_LE(relative_distance(again.u, cold.u), 1e-12);
   }
+  SolverOptions wrong;
+  wrong.initial_r = Eigen::VectorXd::Zero(3);
+  EXPECT_THROW(solve_fast(problem(laws[0]), wrong), std::invalid_argument);
 }
 
 TEST_F(SmallBar, FrictionlessRowsLeftOutOrKeptGiveTheSameAnswer) {

@@ -2,9 +2,10 @@
 
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -313,8 +314,8 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
 
   Eigen::VectorXd r = Eigen::VectorXd::Zero(c.g0.size());
   Eigen::VectorXd w = Eigen::VectorXd::Zero(nw);
-  if (options.initial_r.size() == r.size()) r = options.initial_r;
-  if (options.initial_w.size() == w.size()) w = options.initial_w;
+  if (options.initial_r.size()) r = options.initial_r;
+  if (options.initial_w.size()) w = options.initial_w;
   std::vector<Active> statuses = guess_statuses(c, r, jump_part(c, r, w));
   ActiveSetRun run;
   int proximal_steps = 0;
@@ -393,6 +394,14 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
 
 SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& condensed,
                        const SolverOptions& options) {
+  // A warm start of another scene's size is a caller's mistake, not something to ignore.
+  if (options.initial_r.size() && options.initial_r.size() != 2 * problem.num_nodes())
+    throw std::invalid_argument("solve_fast: the warm start's forces have " + std::to_string(options.initial_r.size()) +
+                                " entries, the problem " + std::to_string(2 * problem.num_nodes()));
+  if (options.initial_w.size() && options.initial_w.size() != condensed.num_floating_unknowns())
+    throw std::invalid_argument("solve_fast: the warm start's layer DOFs have " +
+                                std::to_string(options.initial_w.size()) + " entries, the problem " +
+                                std::to_string(condensed.num_floating_unknowns()));
   SolveReport report = attempt(problem, condensed, options);
   if (report.converged || condensed.num_floating_unknowns() == 0 || report.stop_cause == StopCause::Singular)
     return report;

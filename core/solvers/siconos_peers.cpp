@@ -81,6 +81,13 @@ MappedProblem map_problem(const ContactProblem& problem, const CondensedInterfac
   return p;
 }
 
+// At most this many NSGS sweeps or Lemke pivots: options.max_iterations, else 1e5 sweeps or
+// Siconos' own default of 1e4 pivots.
+int iteration_cap(PeerSolver solver, const SolverOptions& options) {
+  if (options.max_iterations > 0) return options.max_iterations;
+  return solver == PeerSolver::NSGS ? 100000 : 10000;
+}
+
 struct PeerRun {
   int info = 0;          // the driver's return code (0: the peer says it converged)
   int iterations = 0;    // iparam[SICONOS_IPARAM_ITER_DONE]: NSGS sweeps, Lemke pivots
@@ -103,11 +110,7 @@ PeerRun run_peer(MappedProblem& p, PeerSolver solver, const SolverOptions& optio
   const int id = solver == PeerSolver::NSGS ? SICONOS_FRICTION_2D_NSGS : SICONOS_FRICTION_2D_LEMKE;
   std::unique_ptr<::SolverOptions, OptionsDeleter> so(solver_options_create(id));
   if (!so) throw std::runtime_error("Siconos could not create the solver options");
-  // NSGS: at most that many Gauss–Seidel sweeps; Lemke: that many pivots (Siconos: 10000).
-  if (options.max_iterations > 0)
-    so->iparam[SICONOS_IPARAM_MAX_ITER] = options.max_iterations;
-  else if (solver == PeerSolver::NSGS)
-    so->iparam[SICONOS_IPARAM_MAX_ITER] = 100000;
+  so->iparam[SICONOS_IPARAM_MAX_ITER] = iteration_cap(solver, options);
   so->dparam[SICONOS_DPARAM_TOL] = options.tolerance;
   numerics_set_verbose(0);  // Siconos prints to stdout when verbose
 
@@ -150,6 +153,12 @@ SolveReport solve_siconos(const ContactProblem& problem, const CondensedInterfac
   report.u = condensed.displacement(problem, report.r, Eigen::VectorXd());
   report.residual = contact_residual(problem, report.u, report.r);
   report.converged = report.residual.value() <= options.tolerance;
+  // Why a peer stopped short: its cap, or its own criterion met above our residual.
+  report.stop_cause = !report.u.allFinite() || !std::isfinite(report.residual.value()) ? StopCause::NonFinite
+                      : report.converged                                      ? StopCause::Converged
+                      : run.iterations >= iteration_cap(solver, options)      ? StopCause::IterationCap
+                                                                              : StopCause::LossOfAccuracy;
+  report.converged = report.stop_cause == StopCause::Converged;
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::ostringstream msg;
