@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/io/h5_reader.h"
+#include "tests/text_file.h"
 
 namespace {
 
@@ -27,13 +28,7 @@ CliRun run(const std::string& arguments) {
   const fs::path out = dir / ("thinlayer-cli-out-" + tag), err = dir / ("thinlayer-cli-err-" + tag);
   const std::string command = std::string(THINLAYER_CLI) + " " + arguments + " >" + out.string() + " 2>" + err.string();
   const int raw = std::system(command.c_str());
-  auto slurp = [](const fs::path& p) {
-    std::ifstream f(p);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-  };
-  CliRun r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  CliRun r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text_file(out), read_text_file(err)};
   fs::remove(out);
   fs::remove(err);
   return r;

@@ -10,17 +10,11 @@
 #include <string>
 
 #include "core/io/h5_reader.h"
+#include "tests/text_file.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 struct Verify : ::testing::Test {
   fs::path dir = fs::temp_directory_path() / ("thinlayer-verify-" + std::to_string(::getpid()));
@@ -42,7 +36,7 @@ TEST_F(Verify, AWrongReferenceValueFailsInAllThreeOutputs) {
   const fs::path reference = dir / "reference";
   fs::copy(THINLAYER_REFERENCE_DIR, reference);
   {
-    std::string csv = slurp(reference / "table3_baseline.csv");
+    std::string csv = read_text_file(reference / "table3_baseline.csv");
     const size_t at = csv.find("\n1,3,14,15");
     ASSERT_NE(at, std::string::npos);
     csv.replace(at, 10, "\n1,4,13,15");
@@ -50,10 +44,10 @@ TEST_F(Verify, AWrongReferenceValueFailsInAllThreeOutputs) {
   }
   const fs::path out = dir / "out";
   const int status = run(reference, out);
-  EXPECT_EQ(status, 1) << slurp(dir / "stderr");
+  EXPECT_EQ(status, 1) << read_text_file(dir / "stderr");
 
   const std::string id = "table3.row1.fast.baseline";
-  const std::string json = slurp(out / "summary.json");
+  const std::string json = read_text_file(out / "summary.json");
   const size_t entry = json.find("\"" + id + "\"");
   ASSERT_NE(entry, std::string::npos) << json.substr(0, 400);
   const size_t pass = json.find("\"pass\"", entry);
@@ -93,7 +87,7 @@ TEST_F(Verify, AWrongReferenceValueFailsInAllThreeOutputs) {
   EXPECT_TRUE(h5.exists("/studies/timing/time_s"));
   EXPECT_TRUE(h5.exists("/environment"));
 
-  const std::string html = slurp(out / "report" / "index.html");
+  const std::string html = read_text_file(out / "report" / "index.html");
   // Every check: the same verdict in summary.json, in /checks and in every report row that
   // shows it (a row is `<td class="l">ID</td><td><span class="pass|fail">`).
   for (size_t i = 0; i < ids.size(); ++i) {
@@ -112,13 +106,13 @@ TEST_F(Verify, AWrongReferenceValueFailsInAllThreeOutputs) {
   const size_t row = html.find(id);
   ASSERT_NE(row, std::string::npos);
   EXPECT_NE(html.find("FAIL", row), std::string::npos);
-  EXPECT_NE(slurp(dir / "stdout").find("FAIL " + id), std::string::npos);
+  EXPECT_NE(read_text_file(dir / "stdout").find("FAIL " + id), std::string::npos);
 }
 
 TEST_F(Verify, UnwritableDirIsAnErrorAndWritesNothing) {
   const int status = run(THINLAYER_REFERENCE_DIR, "/proc/thinlayer-cannot-write-here");
   EXPECT_EQ(status, 2);
-  const std::string err = slurp(dir / "stderr");
+  const std::string err = read_text_file(dir / "stderr");
   EXPECT_NE(err.find("thinlayer verify: "), std::string::npos) << err;
   EXPECT_FALSE(fs::exists("/proc/thinlayer-cannot-write-here"));
 }

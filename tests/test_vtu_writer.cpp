@@ -18,19 +18,13 @@
 #include <gtest/gtest.h>
 
 #include "core/io/h5_reader.h"
+#include "tests/text_file.h"
 #include "core/io/vtu_writer.h"
 
 namespace thinlayer {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 // --- A minimal reader for the few things the tests look at --------------------------------
 
@@ -126,7 +120,7 @@ class VtuWriter : public ::testing::Test {
 TEST_F(VtuWriter, TwoQuadsReadBack) {
   const SceneRecord scene = two_quads();
   write_vtu(file("s.vtu"), scene);
-  const std::string xml = slurp(file("s.vtu"));
+  const std::string xml = read_text_file(file("s.vtu"));
   EXPECT_EQ(xml.rfind("<?xml", 0), 0u);
   EXPECT_EQ(tag_attribute(xml, "VTKFile", "type"), "UnstructuredGrid");
   EXPECT_EQ(tag_attribute(xml, "Piece", "NumberOfPoints"), "6");
@@ -158,7 +152,7 @@ TEST_F(VtuWriter, TwoQuadsReadBack) {
 
 TEST_F(VtuWriter, InterfaceFieldsSitOnTheirNodes) {
   write_vtu(file("s.vtu"), two_quads());
-  const std::string xml = slurp(file("s.vtu"));
+  const std::string xml = read_text_file(file("s.vtu"));
   EXPECT_EQ(named(xml, "on_interface_S"), (std::vector<double>{1, 1, 1, 0, 0, 0}));
   EXPECT_EQ(named(xml, "S_sigma_N"), (std::vector<double>{0, -5.5, -7.25, 0, 0, 0}));
   EXPECT_EQ(named(xml, "S_sigma_T"), (std::vector<double>{0, 5.5, 1, 0, 0, 0}));
@@ -171,7 +165,7 @@ TEST_F(VtuWriter, InterfaceFieldsSitOnTheirNodes) {
 
 TEST_F(VtuWriter, SceneAttributesAreFieldData) {
   write_vtu(file("s.vtu"), two_quads());
-  const std::string xml = slurp(file("s.vtu"));
+  const std::string xml = read_text_file(file("s.vtu"));
   std::string opening;
   EXPECT_EQ(vtk_string(named(xml, "scene_id", &opening)), "two-quads");
   EXPECT_NE(opening.find("type=\"String\""), std::string::npos) << opening;
@@ -190,7 +184,7 @@ TEST_F(VtuWriter, TrianglesAndAPaddedMixedTable) {
   SceneRecord scene = two_quads();
   scene.cells << 0, 1, 4, 3, 1, 2, 5, -1;  // a quad, then a triangle padded to 4 columns
   write_vtu(file("mixed.vtu"), scene);
-  std::string xml = slurp(file("mixed.vtu"));
+  std::string xml = read_text_file(file("mixed.vtu"));
   EXPECT_EQ(named(xml, "connectivity"), (std::vector<double>{0, 1, 4, 3, 1, 2, 5}));
   EXPECT_EQ(named(xml, "offsets"), (std::vector<double>{4, 7}));
   EXPECT_EQ(named(xml, "types"), (std::vector<double>{9, 5}));  // VTK_QUAD, VTK_TRIANGLE
@@ -198,7 +192,7 @@ TEST_F(VtuWriter, TrianglesAndAPaddedMixedTable) {
   scene.cells.resize(4, 3);
   scene.cells << 0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4;
   write_vtu(file("p1.vtu"), scene);
-  xml = slurp(file("p1.vtu"));
+  xml = read_text_file(file("p1.vtu"));
   EXPECT_EQ(tag_attribute(xml, "Piece", "NumberOfCells"), "4");
   EXPECT_EQ(named(xml, "offsets"), (std::vector<double>{3, 6, 9, 12}));
   EXPECT_EQ(named(xml, "types"), (std::vector<double>{5, 5, 5, 5}));
@@ -244,9 +238,9 @@ TEST_F(VtuWriter, FailedWriteKeepsThePreviousFile) {
   SceneRecord scene = two_quads();
   scene.u(2, 0) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(write_vtu(file("s.vtu"), scene), std::runtime_error);
-  EXPECT_EQ(slurp(file("s.vtu")), "previous");
+  EXPECT_EQ(read_text_file(file("s.vtu")), "previous");
   write_vtu(file("s.vtu"), two_quads());  // a good write replaces it
-  EXPECT_EQ(tag_attribute(slurp(file("s.vtu")), "Piece", "NumberOfPoints"), "6");
+  EXPECT_EQ(tag_attribute(read_text_file(file("s.vtu")), "Piece", "NumberOfPoints"), "6");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
 }
 
@@ -278,7 +272,7 @@ CliRun run_cli(const std::string& arguments, const fs::path& scratch) {
   const std::string command = "cd " + scratch.string() + " && " + std::string(THINLAYER_CLI) + " " + arguments + " >" +
                               out.string() + " 2>" + err.string();
   const int raw = std::system(command.c_str());
-  CliRun r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  CliRun r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text_file(out), read_text_file(err)};
   fs::remove(out);
   fs::remove(err);
   return r;
@@ -291,7 +285,7 @@ TEST_F(VtuWriter, CliWritesTheBarScene) {
   const CliRun r = run_cli("solve --case bar --row 4 --vtu " + vtu.string(), dir_);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("wrote " + vtu.string()), std::string::npos) << r.out;
-  const std::string xml = slurp(vtu);
+  const std::string xml = read_text_file(vtu);
   EXPECT_EQ(tag_attribute(xml, "Piece", "NumberOfPoints"), "1089");  // 33 x 33 nodes
   EXPECT_EQ(tag_attribute(xml, "Piece", "NumberOfCells"), "1024");   // 32 x 32 Q1
   EXPECT_EQ(named(xml, "types"), std::vector<double>(1024, 9));
@@ -308,7 +302,7 @@ TEST_F(VtuWriter, CliPutsEachLayerFaceOnTheNodesOfBothItsBodies) {
   const CliRun r = run_cli("solve --case dovetail --mode layer --law-case d --eps 1e-3 --h-interface 0.05 --h-far 0.2 "
                            "--out " + h5.string() + " --vtu " + vtu.string(), dir_);
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string xml = slurp(vtu);
+  const std::string xml = read_text_file(vtu);
   const H5Reader scene(h5.string());
   const std::string g = "/scenes/" + scene.children("/scenes").at(0);
   for (const std::string face : {"S+", "S-"}) {
