@@ -44,7 +44,7 @@ BarLevel& bar_level(int n) {
   level.problem = std::make_unique<ContactProblem>(
       level.bulk->system(),
       std::vector<Interface>{bar::make_interface(level.bulk->model(),
-                                                 InterfaceLaw::make(row1.lambda_bar, row1.mu_bar, bar::friction))});
+                                                 table3_law(row1))});
   SolverOptions tight;
   tight.tolerance = 1e-12;
   level.reference = solve_fast(*level.problem, level.bulk->condensed(), tight).u;

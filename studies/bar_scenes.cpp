@@ -27,6 +27,10 @@ SolverKind parse_solver(const std::string& name) {
   throw std::invalid_argument("unknown solver '" + name + "' (expected fast or relaxation)");
 }
 
+InterfaceLaw table3_law(const Table3Row& row, double friction) {
+  return InterfaceLaw::make(row.lambda_bar, row.mu_bar, friction);
+}
+
 const char* to_string(SolverKind s) { return s == SolverKind::Fast ? "fast" : "relaxation"; }
 
 std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_case, SolverKind solver) {

@@ -6,6 +6,7 @@
 
 #include "cases/bar/bar.h"
 #include "core/fem/linear_system.h"
+#include "core/io/reference_tables.h"
 #include "core/io/scene_record.h"
 #include "core/mesh/layer_band.h"
 #include "studies/layer_scene.h"
@@ -33,6 +34,9 @@ class BarBulk {
   std::unique_ptr<LinearSystem> system_;
   std::unique_ptr<CondensedInterface> condensed_;
 };
+
+// The interface law of a Table 3 row: its (λ̄, μ̄) with friction f (the bar's f = 1 by default).
+InterfaceLaw table3_law(const Table3Row& row, double friction = bar::friction);
 
 enum class SolverKind { Fast, Relaxation };
 SolverKind parse_solver(const std::string& name);  // "fast" | "relaxation", else throws

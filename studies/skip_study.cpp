@@ -34,7 +34,7 @@ double relative_difference(const std::vector<Eigen::VectorXd>& a, const std::vec
 std::vector<InterfaceLaw> table3_laws() {
   std::vector<InterfaceLaw> laws;
   for (const Table3Row& row : load_table3_paper())
-    laws.push_back(InterfaceLaw::make(row.lambda_bar, row.mu_bar, bar::friction));
+    laws.push_back(table3_law(row));
   return laws;
 }
 

@@ -59,7 +59,7 @@ std::vector<StressScene> stress_scenes(const StressStudyOptions& o) {
                       SolverOptions options) {
     return [=] { return from(solve_bar_layer(mesh, lambda_bar, mu_bar, eps, law_case, SolverKind::Fast, options)); };
   };
-  const InterfaceLaw row1_law = InterfaceLaw::make(row1.lambda_bar, row1.mu_bar, bar::friction);
+  const InterfaceLaw row1_law = table3_law(row1);
   const std::vector<std::pair<SolverKind, SolverOptions>> both = {{SolverKind::Fast, SolverOptions{}},
                                                                   {SolverKind::Relaxation, capped(o.relaxation_cap)}};
 
@@ -103,7 +103,7 @@ std::vector<StressScene> stress_scenes(const StressStudyOptions& o) {
     for (const auto& [solver, options] : both)
       scenes.push_back({"friction.f" + plain(f) + "." + to_string(solver), "friction",
                         "bar limit, row 1, f = " + plain(f) + ", " + to_string(solver), claim(solver),
-                        limit_bar({}, InterfaceLaw::make(row1.lambda_bar, row1.mu_bar, f), "table3-row-1", solver,
+                        limit_bar({}, table3_law(row1, f), "table3-row-1", solver,
                                   options)});
 
   // Distorted meshes: interior nodes moved by up to 24 % of the element size for Q1, 16 % for

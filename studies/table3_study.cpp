@@ -122,7 +122,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
   std::vector<RowRun> runs;
   for (size_t i = 0; i < paper.size(); ++i) {
     RowRun run{paper[i], baseline[i], {}, {}, 0, 0, 0, 0};
-    const InterfaceLaw law = InterfaceLaw::make(paper[i].lambda_bar, paper[i].mu_bar, bar::friction);
+    const InterfaceLaw law = table3_law(paper[i]);
     const std::string law_case = "table3-row-" + std::to_string(paper[i].row);
     std::vector<double> fast_times, relaxation_times;
     for (int rep = 0; rep < std::max(1, options.repeats); ++rep) {
@@ -209,7 +209,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
     progress("refinement " + std::to_string(n) + "x" + std::to_string(n));
     BarBulk fine(bar::MeshOptions{n, n, ElementType::Q1, TriangleDiagonal::Right, PlaneHypothesis::Strain});
     for (const Table3Row& p : paper) {
-      const InterfaceLaw law = InterfaceLaw::make(p.lambda_bar, p.mu_bar, bar::friction);
+      const InterfaceLaw law = table3_law(p);
       const BarScene s = solve_bar(fine, law, "table3-row-" + std::to_string(p.row), SolverKind::Fast, fast_options);
       refined[n].push_back(transitions(s.record.interfaces.at(0), law));
     }

@@ -100,7 +100,7 @@ void bar_level(const TimingStudyOptions& o, int n, std::vector<Row>& rows, std::
 
   const Table3Row row1 = load_table3_paper().at(0);
   const ContactProblem problem(bulk.system(),
-                               {bar::make_interface(bulk.model(), InterfaceLaw::make(row1.lambda_bar, row1.mu_bar, 1.0))});
+                               {bar::make_interface(bulk.model(), table3_law(row1))});
   const Eigen::VectorXd reference = reference_solution(problem, bulk.condensed(), o, level, checks);
 
   if (contains(o.fast_levels, n)) {
