@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -337,6 +338,13 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
     auto true_residual = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& ww) {
       return contact_residual(problem, condensed.displacement(problem, rr, ww), rr).value();
     };
+    // The path is not monotone: a smaller α can free a near-mechanism of the layer and throw
+    // the iterate far off. If the cap is reached, the best iterate seen is the one reported.
+    struct Iterate {
+      Eigen::VectorXd r, w;
+      std::vector<Active> statuses;
+      double residual = std::numeric_limits<double>::infinity();
+    } best;
     while (report.iterations < max_iterations) {
       ++proximal_steps;
       proximal.S = c.S;
@@ -346,7 +354,9 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       report.iterations += step.iterations;
       run.nsgs_sweeps += step.nsgs_sweeps;
       run.settled = step.settled;
-      if (true_residual(r, w) <= options.tolerance) break;
+      const double residual = true_residual(r, w);
+      if (residual < best.residual) best = {r, w, statuses, residual};
+      if (residual <= options.tolerance) break;
       if (step.settled) {
         // Accepted on the true residual alone: a singular system (the layer's position not
         // fixed) still has valid solutions, the minimum-norm one among them.
@@ -359,6 +369,11 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       }
       const bool quick = step.settled && step.iterations <= 3;
       alpha = quick ? std::max(alpha * 0.1, options.proximal_weight * 1e-6) : std::min(alpha * 10, options.proximal_weight);
+    }
+    if (report.iterations >= max_iterations && best.residual < true_residual(r, w)) {
+      r = best.r;
+      w = best.w;
+      statuses = best.statuses;
     }
     // The conditioning of the final statuses' system on the true (unregularised) problem.
     const Step last = solve_statuses(c, statuses);
