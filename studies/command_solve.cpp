@@ -34,7 +34,7 @@ Bar:
   --row N              Table 3 row 1..6: (lambda_bar, mu_bar) from reference/table3_paper.csv
   --lambda-bar X       lambda_bar in daN/mm^3, 0 <= X <= inf (instead of --row)
   --mu-bar X           mu_bar in daN/mm^3, 0 <= X <= inf (instead of --row)
-  --friction F         Coulomb coefficient f >= 0 (default 1; limit mode)
+  --friction F         Coulomb coefficient f >= 0 (default 1; limit mode only)
   --scale S            multiplies lambda_bar and mu_bar (sensitivity study), default 1
     In layer mode the layer has lambda_eps = eps lambda_bar, mu_eps = eps mu_bar.
 )" MESH_AND_SOLVER_HELP R"(
@@ -44,13 +44,15 @@ Dovetail:
                        (G >= 0, 0 <= D < 2) instead of --law-case
   --h-interface H      element size along S (default 0.025: 93 nodes on S)
   --h-far H            element size far from S (default 0.1)
+  --friction F         Coulomb coefficient f >= 0 on S, or on both faces of the layer
+                       (default 0.5, SPEC 2.2; for sensitivity studies)
 
 Exit status: 0 converged, 1 not converged (the result is still written), 2 bad input.
 )";
 
 namespace {
 
-const std::set<std::string> bar_only = {"row", "lambda-bar", "mu-bar", "friction", "scale", "nx", "ny", "element",
+const std::set<std::string> bar_only = {"row", "lambda-bar", "mu-bar", "scale", "nx", "ny", "element",
                                         "diagonal", "plane", "distortion", "load-scale"};
 const std::set<std::string> dovetail_only = {"law-case", "gamma", "delta", "h-interface", "h-far"};
 
@@ -66,6 +68,7 @@ struct SolveInput {
   // dovetail
   dovetail::MeshOptions dovetail_mesh;
   dovetail::Exponents exponents;
+  double friction = dovetail::friction;
 };
 
 void parse_bar(const Args& args, SolveInput& in) {
@@ -87,7 +90,7 @@ void parse_bar(const Args& args, SolveInput& in) {
   }
   const double scale = args.number("scale", 1.0);
   if (!(scale > 0) || std::isinf(scale)) throw std::invalid_argument("--scale must be finite and > 0");
-  if (in.mode == "layer" && args.has("friction")) throw std::invalid_argument("--friction applies to the limit mode only");
+  if (in.mode == "layer" && args.has("friction")) throw std::invalid_argument("--friction applies to the bar's limit mode only (its layer has f = 1 on both faces)");
   in.law = InterfaceLaw::make(lambda_bar * scale, mu_bar * scale, args.number("friction", bar::friction));
   if (in.law_case.empty()) in.law_case = std::string(1, in.law.table1_case());
 }
@@ -96,6 +99,7 @@ void parse_dovetail(const Args& args, SolveInput& in) {
   in.dovetail_mesh.h_interface = args.number("h-interface", in.dovetail_mesh.h_interface);
   in.dovetail_mesh.h_far = args.number("h-far", in.dovetail_mesh.h_far);
   in.dovetail_mesh.layer_elements = in.layer_elements;
+  in.friction = args.number("friction", dovetail::friction);
   if (args.has("law-case")) {
     if (args.has("gamma") || args.has("delta")) throw std::invalid_argument("give either --law-case or --gamma/--delta");
     const std::string c = args.text("law-case", "");
@@ -109,7 +113,7 @@ void parse_dovetail(const Args& args, SolveInput& in) {
 }
 
 SolveInput parse_solve(const std::vector<std::string>& argv) {
-  std::set<std::string> valued = {"case", "mode", "solver", "out", "vtu", "eps", "layer-elements"};
+  std::set<std::string> valued = {"case", "mode", "solver", "out", "vtu", "eps", "layer-elements", "friction"};
   valued.insert(mesh_and_solver_options.begin(), mesh_and_solver_options.end());
   valued.insert(bar_only.begin(), bar_only.end());
   valued.insert(dovetail_only.begin(), dovetail_only.end());
@@ -187,8 +191,8 @@ std::pair<SceneRecord, SolveReport> solve_scene(const SolveInput& in) {
     print_report(s.report, s.record);
     return {std::move(s.record), std::move(s.report)};
   }
-  DovetailLimitBulk bulk(in.dovetail_mesh);
-  const InterfaceLaw law = dovetail::limit_law(in.exponents);
+  DovetailLimitBulk bulk(in.dovetail_mesh, in.friction);
+  const InterfaceLaw law = dovetail::limit_law(in.exponents, bulk.friction());
   std::printf("dovetail case %s (gamma %g, delta %g; limit law: case %c, lambda_bar %g, mu_bar %g, f %g), %s mode, "
               "solver %s\n", in.law_case.empty() ? "custom" : in.law_case.c_str(), in.exponents.gamma,
               in.exponents.delta, law.table1_case(), law.lambda_bar, law.mu_bar, law.friction, in.mode.c_str(),

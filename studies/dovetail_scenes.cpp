@@ -11,8 +11,9 @@ namespace thinlayer {
 namespace {
 
 void add_dovetail_attributes(SceneRecord& r, const std::string& mode, const std::string& law_case,
-                             const dovetail::Exponents& e, double eps, const dovetail::MeshOptions& mesh) {
-  const InterfaceLaw law = dovetail::limit_law(e);
+                             const dovetail::Exponents& e, double eps, const DovetailLimitBulk& bulk) {
+  const dovetail::MeshOptions& mesh = bulk.options();
+  const InterfaceLaw law = dovetail::limit_law(e, bulk.friction());
   r.text["case"] = "dovetail";
   r.text["mode"] = mode;
   r.text["law_case"] = law_case.empty() ? "custom" : law_case;
@@ -24,26 +25,31 @@ void add_dovetail_attributes(SceneRecord& r, const std::string& mode, const std:
   r.numbers["delta"] = e.delta;
   r.numbers["lambda_bar"] = law.lambda_bar;  // the limit law's, in both modes
   r.numbers["mu_bar"] = law.mu_bar;
-  r.numbers["friction"] = dovetail::friction;
+  r.numbers["friction"] = bulk.friction();
   r.numbers["h_interface"] = mesh.h_interface;
   r.numbers["h_far"] = mesh.h_far;
 }
 
 std::string scene_id(const std::string& mode, const std::string& law_case, const dovetail::Exponents& e, double eps,
-                     SolverKind solver, const dovetail::MeshOptions& mesh) {
+                     SolverKind solver, const DovetailLimitBulk& bulk) {
+  const dovetail::MeshOptions& mesh = bulk.options();
   std::ostringstream id;
   id << "dovetail-" << mode << "-";
   if (law_case.empty()) id << "g" << e.gamma << "-d" << e.delta;
   else id << law_case;
   if (mode == "layer") id << "-eps" << eps;
-  id << "-h" << mesh.h_interface << "-" << to_string(solver);
+  id << "-h" << mesh.h_interface;
+  if (bulk.friction() != dovetail::friction) id << "-f" << bulk.friction();
+  id << "-" << to_string(solver);
   return id.str();
 }
 
 
 }  // namespace
 
-DovetailLimitBulk::DovetailLimitBulk(const dovetail::MeshOptions& options) : options_(options) {
+DovetailLimitBulk::DovetailLimitBulk(const dovetail::MeshOptions& options, double friction)
+    : options_(options), friction_(friction) {
+  dovetail::limit_law({}, friction_);  // throws on a friction that no law accepts, before any meshing
   const auto start = std::chrono::steady_clock::now();
   meshes_ = dovetail::make_limit_meshes(options);
   meshing_time_s_ = seconds_since(start);
@@ -62,15 +68,15 @@ const CondensedInterface& DovetailLimitBulk::condensed() {
 DovetailScene solve_dovetail_limit(DovetailLimitBulk& bulk, const dovetail::Exponents& e,
                                    const std::string& law_case, SolverKind solver, const SolverOptions& options,
                                    double status_tolerance) {
-  const InterfaceLaw law = dovetail::limit_law(dovetail::validated(e));
+  const InterfaceLaw law = dovetail::limit_law(dovetail::validated(e), bulk.friction());
   const ContactProblem problem(bulk.system(), {dovetail::make_limit_interface(bulk.model(), law)});
   const CondensedInterface* condensed = solver == SolverKind::Fast ? &bulk.condensed() : nullptr;
   DovetailScene scene;
   scene.report = run_solver(problem, condensed, solver, options);
   SceneRecord& r = scene.record;
-  r = record_scene(scene_id("limit", law_case, e, 0, solver, bulk.options()), bulk.model(), problem, scene.report,
+  r = record_scene(scene_id("limit", law_case, e, 0, solver, bulk), bulk.model(), problem, scene.report,
                    status_tolerance);
-  add_dovetail_attributes(r, "limit", law_case, e, 0.0, bulk.options());
+  add_dovetail_attributes(r, "limit", law_case, e, 0.0, bulk);
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   r.numbers["meshing_time_s"] = bulk.meshing_time_s();
   scene.limit = r.interfaces.at(0).counts();
@@ -89,15 +95,15 @@ DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail
   scene.layer_quality = mesh_quality(meshes.layer);
   const Model model = dovetail::make_layer_model(meshes, x);
   const LinearSystem system(model);
-  const ContactProblem problem(system, dovetail::make_layer_interfaces(model));
+  const ContactProblem problem(system, dovetail::make_layer_interfaces(model, bulk.friction()));
   std::unique_ptr<CondensedInterface> condensed;
   if (solver == SolverKind::Fast) condensed = std::make_unique<CondensedInterface>(problem);
   scene.report = run_solver(problem, condensed.get(), solver, options);
 
   SceneRecord& r = scene.record;
-  r = record_scene(scene_id("layer", law_case, x, eps, solver, bulk.options()), model, problem, scene.report,
+  r = record_scene(scene_id("layer", law_case, x, eps, solver, bulk), model, problem, scene.report,
                    status_tolerance);
-  add_dovetail_attributes(r, "layer", law_case, x, eps, bulk.options());
+  add_dovetail_attributes(r, "layer", law_case, x, eps, bulk);
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   r.numbers["meshing_time_s"] = scene.meshing_time_s;
   scene.counts = finish_layer_record(r, model.bodies[1].material, bulk.options().layer_elements, scene.layer_quality);

@@ -14,11 +14,13 @@
 
 namespace thinlayer {
 
-// The limit-mode meshes, model and (on first use) the condensation shared by the nine laws.
+// The limit-mode meshes, model and (on first use) the condensation shared by the nine laws,
+// and the Coulomb coefficient of every scene built on them (both modes; SPEC §2.2: 0.5).
 class DovetailLimitBulk {
  public:
-  explicit DovetailLimitBulk(const dovetail::MeshOptions& options = {});
+  explicit DovetailLimitBulk(const dovetail::MeshOptions& options = {}, double friction = dovetail::friction);
   const dovetail::MeshOptions& options() const { return options_; }
+  double friction() const { return friction_; }
   const dovetail::LimitMeshes& meshes() const { return meshes_; }
   const Model& model() const { return model_; }
   const LinearSystem& system() const { return *system_; }
@@ -27,6 +29,7 @@ class DovetailLimitBulk {
 
  private:
   dovetail::MeshOptions options_;
+  double friction_;
   dovetail::LimitMeshes meshes_;
   double meshing_time_s_ = 0;
   Model model_;

@@ -59,6 +59,9 @@ TEST_F(Cli, BadInputGivesOneLineErrorNonZeroExitAndNoFile) {
       "solve --case bar --lambda-bar 4 --mu-bar NaN",
       "solve --case bar --row 1 --friction -0.5",
       "solve --case bar --row 1 --friction nan",
+      "solve --case bar --mode layer --row 1 --eps 1e-3 --friction 0.5",
+      "solve --case dovetail --law-case d --friction -0.1",
+      "solve --case dovetail --mode layer --law-case e --eps 1e-4 --friction inf",
       "solve --case bar --row 1 --nx 0",
       "solve --case bar --row 1 --element Q2",
       "solve --case bar --row 1 --solver magic",
@@ -191,6 +194,33 @@ TEST_F(Cli, LayerModeWritesBothFacesOfTheLayer) {
     for (const char* field : {"x", "normal", "jump_N", "jump_T", "sigma_N", "sigma_T", "status"})
       EXPECT_TRUE(h5.exists(g + "/interface/" + face + "/" + field)) << face << "/" << field;
   EXPECT_EQ(h5.children(g + "/reactions"), (std::vector<std::string>{"base_bottom", "tenon_top"}));
+}
+
+// --friction reaches the law on S (limit mode) and both faces of the layer (layer mode): the
+// tangential stress never exceeds f |sigma_N|, and some node reaches the cone (slides) at the given f.
+TEST_F(Cli, DovetailFrictionReachesEveryContactFace) {
+  for (const std::string mode : {"limit", "layer"}) {
+    const fs::path file = dir / (mode + "-f.h5");
+    const CliRun r = run("solve --case dovetail --mode " + mode + (mode == "layer" ? " --eps 1e-3" : "") +
+                         " --law-case d --h-interface 0.05 --h-far 0.2 --friction 0.2 --out " + file.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    thinlayer::H5Reader h5(file.string());
+    const std::string id = h5.children("/scenes").at(0);
+    EXPECT_NE(id.find("-f0.2"), std::string::npos) << id;  // not the id of the f = 0.5 scene
+    const std::string g = "/scenes/" + id;
+    EXPECT_DOUBLE_EQ(h5.attr_double(g, "friction"), 0.2);
+    double largest_ratio = 0;
+    for (const std::string& face : h5.children(g + "/interface")) {
+      const auto sN = h5.read_doubles(g + "/interface/" + face + "/sigma_N");
+      const auto sT = h5.read_doubles(g + "/interface/" + face + "/sigma_T");
+      for (size_t k = 0; k < sN.size(); ++k) {
+        if (sN[k] >= 0) continue;
+        EXPECT_LE(std::abs(sT[k]), 0.2 * std::abs(sN[k]) * (1 + 1e-8)) << mode << " " << face << " node " << k;
+        largest_ratio = std::max(largest_ratio, std::abs(sT[k] / sN[k]));
+      }
+    }
+    EXPECT_NEAR(largest_ratio, 0.2, 1e-8) << mode;
+  }
 }
 
 // Issue 5: a deliberately singular scene and a deliberately non-converging one each stop with

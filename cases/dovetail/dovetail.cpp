@@ -49,8 +49,8 @@ Exponents exponents_of(char law_case) {
   throw std::invalid_argument(std::string("unknown law case '") + law_case + "' (expected a..i)");
 }
 
-InterfaceLaw limit_law(const Exponents& e) {
-  return InterfaceLaw::make(limit_ratio(e.gamma, lambda_g), limit_ratio(e.delta, mu_g), friction);
+InterfaceLaw limit_law(const Exponents& e, double f) {
+  return InterfaceLaw::make(limit_ratio(e.gamma, lambda_g), limit_ratio(e.delta, mu_g), f);
 }
 
 Model make_limit_model(const LimitMeshes& meshes) {
@@ -83,8 +83,8 @@ Model make_layer_model(const LayerMeshes& meshes, const Exponents& e) {
   return model;
 }
 
-std::vector<Interface> make_layer_interfaces(const Model& model) {
-  const InterfaceLaw signorini_coulomb = InterfaceLaw::make(inf, inf, friction);
+std::vector<Interface> make_layer_interfaces(const Model& model, double f) {
+  const InterfaceLaw signorini_coulomb = InterfaceLaw::make(inf, inf, f);
   const Mesh& base = model.bodies.at(0).mesh;
   const Mesh& layer = model.bodies.at(1).mesh;
   const Mesh& tenon = model.bodies.at(2).mesh;

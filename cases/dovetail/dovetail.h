@@ -3,7 +3,8 @@
 // stresses in daN/mm².
 //
 // Base clamped on y = -1; the tenon's top edge y = 0.5 pulled out at 45° by the imposed
-// displacement (U_x, U_y) = (1e-3, 1e-3). Friction f = 0.5 on every contact face. The glue's
+// displacement (U_x, U_y) = (1e-3, 1e-3). Friction f = 0.5 on every contact face (the default;
+// a sensitivity study may change it). The glue's
 // reference moduli are the adherents': λ_g = λ_m, μ_g = μ_m; the layer of thickness ε has
 // λ_ε = ε^γ λ_g and μ_ε = ε^δ μ_g (γ ≥ 0, 0 ≤ δ < 2).
 #include <vector>
@@ -30,7 +31,8 @@ Exponents validated(Exponents e);
 Exponents exponents_of(char law_case);
 
 // The limit law: λ̄ = lim ε^(γ-1) λ_g (∞ if γ < 1, λ_g if γ = 1, 0 if γ > 1), likewise μ̄.
-InterfaceLaw limit_law(const Exponents& e);
+// f: the Coulomb coefficient (validated by InterfaceLaw::make: finite, >= 0).
+InterfaceLaw limit_law(const Exponents& e, double f = friction);
 
 // Limit mode: body 0 base, body 1 tenon; Dirichlet "base_bottom" and "tenon_top".
 Model make_limit_model(const LimitMeshes& meshes);
@@ -40,7 +42,7 @@ Interface make_limit_interface(const Model& model, const InterfaceLaw& law);
 // Thin-layer mode: body 0 base, body 1 the floating layer (λ_ε, μ_ε), body 2 tenon.
 Model make_layer_model(const LayerMeshes& meshes, const Exponents& e);
 // "S+" (plus = tenon, minus = layer) and "S-" (plus = layer, minus = base), Signorini-Coulomb
-// with f = 0.5; node k of either is node k of the limit mode's S.
-std::vector<Interface> make_layer_interfaces(const Model& model);
+// with coefficient f on both; node k of either is node k of the limit mode's S.
+std::vector<Interface> make_layer_interfaces(const Model& model, double f = friction);
 
 }  // namespace thinlayer::dovetail
