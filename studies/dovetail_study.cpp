@@ -31,7 +31,7 @@ std::vector<Check> run_dovetail_study(const DovetailStudyOptions& options, H5Wri
   std::printf("\nDovetail (SPEC 2.2): %d nodes on S, f = %g, pull-out (%g, %g) at 45 degrees; counts gap/slide/stick;\n"
               "layer mode: S+ (tenon/layer), S- (layer/base), combined; 'diff' = nodes of S whose combined status\n"
               "differs from the limit mode's; fast solver, tolerance %g\n\n",
-              static_cast<int>(bulk.meshes().base.node_set("S").size()), dovetail::friction, dovetail::pull_x,
+              static_cast<int>(bulk.meshes().base.node_set("S").size()), bulk.friction(), dovetail::pull_x,
               dovetail::pull_y, fast.tolerance);
   std::printf("%-4s %-7s | %-9s %-9s %-9s %4s | %5s %9s %8s %8s", "case", "eps", "S+", "S-", "combined", "diff",
               "it", "residual", "solve[s]", "setup[s]");

@@ -97,7 +97,9 @@ TEST(StopCause, ACappedLayerSolveReportsItsBestIterate) {
     const DovetailScene s =
         solve_dovetail_layer(bulk, dovetail::exponents_of('e'), 1e-4, "e", SolverKind::Fast, options);
     SCOPED_TRACE("cap " + std::to_string(cap) + ": " + s.report.message);
-    if (!s.report.converged) EXPECT_EQ(s.report.stop_cause, StopCause::IterationCap);
+    if (!s.report.converged) {
+      EXPECT_EQ(s.report.stop_cause, StopCause::IterationCap);
+    }
     EXPECT_LE(s.report.residual.value(), previous);
     previous = s.report.residual.value();
   }

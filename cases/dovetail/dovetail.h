@@ -4,9 +4,9 @@
 //
 // Base clamped on y = -1; the tenon's top edge y = 0.5 pulled out at 45° by the imposed
 // displacement (U_x, U_y) = (1e-3, 1e-3). Friction f = 0.5 on every contact face (the default;
-// a sensitivity study may change it). The glue's
-// reference moduli are the adherents': λ_g = λ_m, μ_g = μ_m; the layer of thickness ε has
-// λ_ε = ε^γ λ_g and μ_ε = ε^δ μ_g (γ ≥ 0, 0 ≤ δ < 2).
+// a sensitivity study may change it). The glue's reference moduli are the adherents':
+// λ_g = λ_m, μ_g = μ_m; the layer of thickness ε has λ_ε = ε^γ λ_g and μ_ε = ε^δ μ_g
+// (γ ≥ 0, 0 ≤ δ < 2).
 #include <vector>
 
 #include "cases/dovetail/dovetail_mesh.h"

@@ -345,6 +345,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       std::vector<Active> statuses;
       double residual = std::numeric_limits<double>::infinity();
     } best;
+    double residual = std::numeric_limits<double>::infinity();  // of the current iterate
     while (report.iterations < max_iterations) {
       ++proximal_steps;
       proximal.S = c.S;
@@ -354,23 +355,25 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       report.iterations += step.iterations;
       run.nsgs_sweeps += step.nsgs_sweeps;
       run.settled = step.settled;
-      const double residual = true_residual(r, w);
+      residual = true_residual(r, w);
       if (residual < best.residual) best = {r, w, statuses, residual};
       if (residual <= options.tolerance) break;
       if (step.settled) {
         // Accepted on the true residual alone: a singular system (the layer's position not
         // fixed) still has valid solutions, the minimum-norm one among them.
         const Step polish = solve_statuses(c, statuses);
-        if (true_residual(polish.r, polish.w) <= options.tolerance) {
+        const double polished = true_residual(polish.r, polish.w);
+        if (polished <= options.tolerance) {
           r = polish.r;
           w = polish.w;
+          residual = polished;
           break;
         }
       }
       const bool quick = step.settled && step.iterations <= 3;
       alpha = quick ? std::max(alpha * 0.1, options.proximal_weight * 1e-6) : std::min(alpha * 10, options.proximal_weight);
     }
-    if (report.iterations >= max_iterations && best.residual < true_residual(r, w)) {
+    if (report.iterations >= max_iterations && best.residual < residual) {
       r = best.r;
       w = best.w;
       statuses = best.statuses;
