@@ -31,8 +31,11 @@ InterfaceLaw InterfaceLaw::make(double lambda_bar, double mu_bar, double frictio
   };
   check("lambda_bar", lambda_bar);
   check("mu_bar", mu_bar);
-  check("friction", friction);
-  if (std::isinf(friction)) throw std::invalid_argument("friction must be finite");
+  if (!(friction >= 0) || std::isinf(friction)) {
+    std::ostringstream msg;
+    msg << "friction must be a finite number >= 0, got " << friction;
+    throw std::invalid_argument(msg.str());
+  }
   return InterfaceLaw{lambda_bar, mu_bar, friction};
 }
 
