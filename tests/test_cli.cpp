@@ -40,6 +40,9 @@ int lines(const std::string& s) {
   return n;
 }
 
+// The group of the first scene of a file that `solve --out` wrote (it holds one).
+std::string first_scene(const thinlayer::H5Reader& h5) { return "/scenes/" + h5.children("/scenes").at(0); }
+
 struct Cli : ::testing::Test {
   fs::path dir = fs::temp_directory_path() / ("thinlayer-cli-" + std::to_string(::getpid()));
   void SetUp() override { fs::create_directories(dir); }
@@ -182,7 +185,7 @@ TEST_F(Cli, LayerModeWritesBothFacesOfTheLayer) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("aspect ratio"), std::string::npos) << r.out;  // the layer's mesh quality is printed
   thinlayer::H5Reader h5(file.string());
-  const std::string g = "/scenes/" + h5.children("/scenes").at(0);
+  const std::string g = first_scene(h5);
   EXPECT_EQ(h5.attr_string(g, "case"), "dovetail");
   EXPECT_EQ(h5.attr_string(g, "mode"), "layer");
   EXPECT_EQ(h5.attr_string(g, "law_case"), "d");
@@ -205,9 +208,8 @@ TEST_F(Cli, DovetailFrictionReachesEveryContactFace) {
                          " --law-case d --h-interface 0.05 --h-far 0.2 --friction 0.2 --out " + file.string());
     ASSERT_EQ(r.status, 0) << r.err;
     thinlayer::H5Reader h5(file.string());
-    const std::string id = h5.children("/scenes").at(0);
-    EXPECT_NE(id.find("-f0.2"), std::string::npos) << id;  // not the id of the f = 0.5 scene
-    const std::string g = "/scenes/" + id;
+    const std::string g = first_scene(h5);
+    EXPECT_NE(g.find("-f0.2"), std::string::npos) << g;  // not the id of the f = 0.5 scene
     EXPECT_DOUBLE_EQ(h5.attr_double(g, "friction"), 0.2);
     double largest_ratio = 0;
     for (const std::string& face : h5.children(g + "/interface")) {
@@ -234,7 +236,7 @@ TEST_F(Cli, SingularSceneNamesItsCauseAndExitsNonZero) {
   EXPECT_NE(r.err.find("singular system"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("held by none of its contacts"), std::string::npos) << r.err;
   const thinlayer::H5Reader h5(file.string());
-  const std::string g = "/scenes/" + h5.children("/scenes").at(0);
+  const std::string g = first_scene(h5);
   EXPECT_EQ(h5.attr_int(g, "converged"), 0);
   EXPECT_EQ(h5.attr_string(g, "stop_cause"), "singular system");
   EXPECT_GT(h5.attr_double(g, "condition_estimate"), 1e14);  // numerically singular, and said so
@@ -248,7 +250,7 @@ TEST_F(Cli, NonConvergingSceneNamesItsCauseAndExitsNonZero) {
   EXPECT_NE(r.err.find("iteration cap"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("condition estimate"), std::string::npos) << r.err;
   const thinlayer::H5Reader h5(file.string());
-  const std::string g = "/scenes/" + h5.children("/scenes").at(0);
+  const std::string g = first_scene(h5);
   EXPECT_EQ(h5.attr_int(g, "converged"), 0);
   EXPECT_EQ(h5.attr_string(g, "stop_cause"), "iteration cap");
 }
@@ -272,7 +274,7 @@ TEST_F(Cli, RelaxationSolveReportsNonConvergenceWithExitStatus1) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("NOT converged"), std::string::npos) << r.err;
   thinlayer::H5Reader h5(file.string());  // the result is written, marked as not converged
-  EXPECT_EQ(h5.attr_int("/scenes/" + h5.children("/scenes").at(0), "converged"), 0);
+  EXPECT_EQ(h5.attr_int(first_scene(h5), "converged"), 0);
 }
 
 }  // namespace
