@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace thinlayer {
@@ -56,6 +57,15 @@ int Args::integer(const std::string& name, int fallback) const {
   const double v = number(name, fallback);
   if (v != std::floor(v) || std::abs(v) > 1e9) throw std::invalid_argument("option --" + name + ": not an integer");
   return static_cast<int>(v);
+}
+
+std::vector<double> parse_number_list(const std::string& option, const std::string& text) {
+  std::vector<double> values;
+  std::stringstream items(text);
+  for (std::string item; std::getline(items, item, ',');) values.push_back(parse_number(option, item));
+  if (values.empty() || text.back() == ',')
+    throw std::invalid_argument("option --" + option + ": expected a comma-separated list of numbers, got '" + text + "'");
+  return values;
 }
 
 }  // namespace thinlayer

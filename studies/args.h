@@ -28,5 +28,7 @@ class Args {
 };
 
 double parse_number(const std::string& option, const std::string& text);
+// "a,b,c" -> the numbers, each by parse_number; an empty list or item is an error.
+std::vector<double> parse_number_list(const std::string& option, const std::string& text);
 
 }  // namespace thinlayer

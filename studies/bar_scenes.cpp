@@ -89,6 +89,7 @@ BarScene solve_bar(BarBulk& bulk, const InterfaceLaw& law, const std::string& la
   r = record_scene(bar_scene_id(mesh, law_case, solver), bulk.model(), problem, scene.report, status_tolerance);
   add_bar_attributes(r, mesh, "limit", law_case, law.lambda_bar, law.mu_bar, 0.0);
   r.numbers["friction"] = law.friction;
+  record_friction_path(r, options.friction_path, law.friction);
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   scene.counts = r.interfaces.at(0).counts();
   return scene;
@@ -120,6 +121,7 @@ BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, d
   SceneRecord& r = scene.record;
   r = record_scene(id.str(), model, problem, scene.report, status_tolerance);
   add_bar_attributes(r, mesh, "layer", law_case, lambda_bar, mu_bar, eps);
+  record_friction_path(r, options.friction_path, bar::friction);
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   scene.counts = finish_layer_record(r, model.bodies[1].material, layer.layer_elements, scene.layer_quality);
   return scene;

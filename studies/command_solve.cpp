@@ -47,6 +47,13 @@ Dovetail:
   --friction F         Coulomb coefficient f >= 0 on S, or on both faces of the layer
                        (default 0.5, SPEC 2.2; for sensitivity studies)
 
+Both cases:
+  --friction-path F1,F2,...
+                       fast solver: solve first with these Coulomb coefficients, in order, each
+                       solve warm started from the one before, then with the scene's own f, which
+                       alone decides convergence (a continuation for hard layer scenes; README,
+                       known limitations). Each Fi finite and >= 0; the scene's f must be > 0.
+
 Exit status: 0 converged, 1 not converged (the result is still written), 2 bad input.
 )";
 
@@ -113,7 +120,8 @@ void parse_dovetail(const Args& args, SolveInput& in) {
 }
 
 SolveInput parse_solve(const std::vector<std::string>& argv) {
-  std::set<std::string> valued = {"case", "mode", "solver", "out", "vtu", "eps", "layer-elements", "friction"};
+  std::set<std::string> valued = {"case", "mode", "solver", "out", "vtu", "eps", "layer-elements", "friction",
+                                  "friction-path"};
   valued.insert(mesh_and_solver_options.begin(), mesh_and_solver_options.end());
   valued.insert(bar_only.begin(), bar_only.end());
   valued.insert(dovetail_only.begin(), dovetail_only.end());
@@ -149,6 +157,11 @@ SolveInput parse_solve(const std::vector<std::string>& argv) {
     throw std::invalid_argument("--out and --vtu name the same file");
   if (in.case_name == "bar") parse_bar(args, in);
   else parse_dovetail(args, in);
+  if (args.has("friction-path")) {
+    if (in.solver != SolverKind::Fast) throw std::invalid_argument("--friction-path applies to the fast solver only");
+    in.options.friction_path = friction_path_multipliers(args.text("friction-path", ""),
+                                                         in.case_name == "bar" ? in.law.friction : in.friction);
+  }
   return in;
 }
 

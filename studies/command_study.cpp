@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <sstream>
 
 #include "core/io/h5_writer.h"
 #include "studies/args.h"
@@ -17,6 +16,7 @@
 #include "studies/summary_json.h"
 #include "studies/convergence_study.h"
 #include "studies/dovetail_study.h"
+#include "studies/options.h"
 #include "studies/report_runner.h"
 #include "studies/results_file.h"
 #include "studies/skip_study.h"
@@ -67,6 +67,9 @@ Options:
   --threads N        S2/S3: layer-mode scenes solved in parallel (default 2)
   --bisection-steps N  S3: bisection steps per bracket (default 2)
   --relaxation-cap N dovetail: also run the relaxation solver, capped at N sweeps
+  --friction-path F1,F2,...
+                     dovetail: solve every layer scene along this continuation in the Coulomb
+                     coefficient first (as `thinlayer solve --friction-path`), then at f = 0.5
 
 Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input.
 )";
@@ -100,7 +103,8 @@ struct StudyInput {
 };
 
 StudyInput parse(const std::vector<std::string>& argv, bool require_out) {
-  const Args args(argv, {"out", "repeats", "cases", "eps", "relaxation-cap", "tolerance", "threads", "bisection-steps"},
+  const Args args(argv, {"out", "repeats", "cases", "eps", "relaxation-cap", "tolerance", "threads", "bisection-steps",
+                   "friction-path"},
                   {"quick", "quiet"});
   StudyInput in;
   in.out_dir = args.text("out", "");
@@ -120,14 +124,12 @@ StudyInput parse(const std::vector<std::string>& argv, bool require_out) {
     if (c < 'a' || c > 'i') throw std::invalid_argument("--cases: unknown case '" + std::string(1, c) + "' (expected a..i)");
   if (in.dovetail.cases.empty()) throw std::invalid_argument("--cases: give at least one case");
   if (args.has("eps")) {
-    in.dovetail.eps.clear();
-    std::stringstream list(args.text("eps", ""));
-    for (std::string item; std::getline(list, item, ',');) {
-      const double eps = parse_number("eps", item);
+    in.dovetail.eps = parse_number_list("eps", args.text("eps", ""));
+    for (double eps : in.dovetail.eps)
       if (!(eps > 0) || std::isinf(eps)) throw std::invalid_argument("--eps: thicknesses must be finite and > 0");
-      in.dovetail.eps.push_back(eps);
-    }
   }
+  if (args.has("friction-path"))
+    in.dovetail.friction_path = friction_path_multipliers(args.text("friction-path", ""), dovetail::friction);
   in.dovetail.relaxation_cap = args.integer("relaxation-cap", 0);
   if (in.dovetail.relaxation_cap < 0) throw std::invalid_argument("--relaxation-cap must be >= 0");
   in.convergence.cases = in.dovetail.cases;

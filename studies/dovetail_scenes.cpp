@@ -77,6 +77,7 @@ DovetailScene solve_dovetail_limit(DovetailLimitBulk& bulk, const dovetail::Expo
   r = record_scene(scene_id("limit", law_case, e, 0, solver, bulk), bulk.model(), problem, scene.report,
                    status_tolerance);
   add_dovetail_attributes(r, "limit", law_case, e, 0.0, bulk);
+  record_friction_path(r, options.friction_path, bulk.friction());
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   r.numbers["meshing_time_s"] = bulk.meshing_time_s();
   scene.limit = r.interfaces.at(0).counts();
@@ -104,6 +105,7 @@ DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail
   r = record_scene(scene_id("layer", law_case, x, eps, solver, bulk), model, problem, scene.report,
                    status_tolerance);
   add_dovetail_attributes(r, "layer", law_case, x, eps, bulk);
+  record_friction_path(r, options.friction_path, bulk.friction());
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   r.numbers["meshing_time_s"] = scene.meshing_time_s;
   scene.counts = finish_layer_record(r, model.bodies[1].material, bulk.options().layer_elements, scene.layer_quality);

@@ -26,6 +26,8 @@ std::vector<Check> run_dovetail_study(const DovetailStudyOptions& options, H5Wri
   std::vector<Check> checks;
   DovetailLimitBulk bulk;
   const SolverOptions fast;
+  SolverOptions fast_layer;
+  fast_layer.friction_path = options.friction_path;
   SolverOptions relaxation;
   relaxation.max_iterations = options.relaxation_cap;
   std::printf("\nDovetail (SPEC 2.2): %d nodes on S, f = %g, pull-out (%g, %g) at 45 degrees; counts gap/slide/stick;\n"
@@ -33,6 +35,11 @@ std::vector<Check> run_dovetail_study(const DovetailStudyOptions& options, H5Wri
               "differs from the limit mode's; fast solver, tolerance %g\n\n",
               static_cast<int>(bulk.meshes().base.node_set("S").size()), bulk.friction(), dovetail::pull_x,
               dovetail::pull_y, fast.tolerance);
+  if (!options.friction_path.empty()) {
+    std::printf("layer scenes solved along a friction path: f =");
+    for (double t : options.friction_path) std::printf(" %g,", t * bulk.friction());
+    std::printf(" then %g (the iterations and times below include every stage)\n\n", bulk.friction());
+  }
   std::printf("%-4s %-7s | %-9s %-9s %-9s %4s | %5s %9s %8s %8s", "case", "eps", "S+", "S-", "combined", "diff",
               "it", "residual", "solve[s]", "setup[s]");
   if (options.relaxation_cap) std::printf(" | %-22s", "relaxation (sweeps, residual)");
@@ -56,7 +63,7 @@ std::vector<Check> run_dovetail_study(const DovetailStudyOptions& options, H5Wri
     std::printf("\n");
     for (double eps : options.eps) {
       if (options.verbose) std::cerr << "[dovetail] case " << c << ", eps " << eps << "\n";
-      const DovetailScene s = solve_dovetail_layer(bulk, e, eps, name, SolverKind::Fast, fast);
+      const DovetailScene s = solve_dovetail_layer(bulk, e, eps, name, SolverKind::Fast, fast_layer);
       std::printf("%-4s %-7g | %-9s %-9s %-9s %4d | %5d %9s %8.4f %8.4f", "", eps, counts_text(s.counts.plus_face).c_str(),
                   counts_text(s.counts.minus_face).c_str(), counts_text(s.counts.combined).c_str(),
                   status_differences(s.record, limit.record), s.report.iterations,

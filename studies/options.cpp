@@ -1,6 +1,7 @@
 #include "studies/options.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace thinlayer {
@@ -38,6 +39,20 @@ SolverOptions parse_solver_options(const Args& args) {
   o.omega = args.number("omega", o.omega);
   if (!(o.omega > 0 && o.omega < 2)) throw std::invalid_argument("--omega must be in (0, 2)");
   return o;
+}
+
+std::vector<double> friction_path_multipliers(const std::string& text, double friction) {
+  if (!(friction > 0)) throw std::invalid_argument("--friction-path needs a scene with friction (f > 0)");
+  std::vector<double> path = parse_number_list("friction-path", text);
+  for (double& f : path) {
+    if (!(f >= 0) || std::isinf(f)) {
+      std::ostringstream why;
+      why << "--friction-path: each coefficient must be a finite number >= 0, got " << f;
+      throw std::invalid_argument(why.str());
+    }
+    f /= friction;
+  }
+  return path;
 }
 
 }  // namespace thinlayer

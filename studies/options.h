@@ -27,5 +27,8 @@ inline const std::set<std::string> mesh_and_solver_options = {"nx", "ny", "eleme
 
 bar::MeshOptions parse_bar_mesh(const Args& args);
 SolverOptions parse_solver_options(const Args& args);
+// --friction-path "F1,F2,...": Coulomb coefficients (finite, >= 0) -> their multiples of the
+// scene's f, as SolverOptions::friction_path takes them. The scene's f must be > 0.
+std::vector<double> friction_path_multipliers(const std::string& text, double friction);
 
 }  // namespace thinlayer

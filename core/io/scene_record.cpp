@@ -1,6 +1,7 @@
 #include "core/io/scene_record.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace thinlayer {
@@ -112,6 +113,14 @@ void require_finite_results(const SceneRecord& scene) {
 }
 
 }  // namespace
+
+void record_friction_path(SceneRecord& scene, const std::vector<double>& multipliers, double friction) {
+  if (multipliers.empty()) return;
+  std::ostringstream path;
+  for (double t : multipliers) path << t * friction << ",";
+  path << friction;
+  scene.text["friction_path"] = path.str();
+}
 
 void write_scene(H5Writer& file, const SceneRecord& scene) {
   require_finite_results(scene);

@@ -49,6 +49,11 @@ std::vector<InterfaceFields> interface_fields(const ContactProblem& problem, con
 SceneRecord record_scene(const std::string& id, const Model& model, const ContactProblem& problem,
                          const SolveReport& report, double status_tolerance);
 
+// The Coulomb coefficients a fast solve went through before the scene's own f
+// (SolverOptions::friction_path holds their multipliers of f): the text attribute
+// "friction_path" = "f1,f2,...,f". Nothing when the path is empty.
+void record_friction_path(SceneRecord& scene, const std::vector<double>& multipliers, double friction);
+
 void write_scene(H5Writer& file, const SceneRecord& scene);
 
 }  // namespace thinlayer

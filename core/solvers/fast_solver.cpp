@@ -10,6 +10,8 @@
 
 #include <Eigen/Dense>
 
+#include "core/solvers/friction_path.h"
+
 namespace thinlayer {
 
 namespace {
@@ -420,6 +422,7 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
     throw std::invalid_argument("solve_fast: the warm start's layer DOFs have " +
                                 std::to_string(options.initial_w.size()) + " entries, the problem " +
                                 std::to_string(condensed.num_floating_unknowns()));
+  if (!options.friction_path.empty()) return solve_fast_along_friction_path(problem, condensed, options);
   SolveReport report = attempt(problem, condensed, options);
   if (report.converged || condensed.num_floating_unknowns() == 0 || report.stop_cause == StopCause::Singular)
     return report;

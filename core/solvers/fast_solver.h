@@ -4,7 +4,9 @@
 // Signorini-Coulomb conditions (Alart-Curnier; Hüeber-Stadler-Wohlmuth) — on the small dense
 // problem d = g₀ + (W + C) r. Once the statuses are right, one linear solve gives the exact
 // answer; if the active set cycles, projected Gauss-Seidel sweeps on the same condensed
-// problem (NSGS) move the iterate before the Newton steps resume.
+// problem (NSGS) move the iterate before the Newton steps resume. With
+// SolverOptions::friction_path set, the solve follows that continuation in the Coulomb
+// coefficient first (core/solvers/friction_path.h).
 #include "core/solvers/condensed_interface.h"
 #include "core/solvers/solve_report.h"
 

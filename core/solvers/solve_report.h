@@ -1,6 +1,7 @@
 #pragma once
 // What every solve returns (SPEC §1.5): the solution, how it was reached, and how well.
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -60,6 +61,10 @@ struct SolverOptions {
   // Fast solver only: leave out the tangential rows of nodes whose law has no tangential
   // interaction (K_T = 0 or f = 0: cases a, c, e). Off only to measure what it saves.
   bool skip_frictionless_rows = true;
+  // Fast solver only: multipliers t of every Coulomb coefficient to solve for first, in order,
+  // each solve warm started from the one before; the scene itself (t = 1) comes last and alone
+  // decides convergence (core/solvers/friction_path.h). Empty (the default): none.
+  std::vector<double> friction_path;
 };
 
 }  // namespace thinlayer
