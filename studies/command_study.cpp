@@ -20,6 +20,7 @@
 #include "studies/report_runner.h"
 #include "studies/results_file.h"
 #include "studies/skip_study.h"
+#include "studies/spread_command.h"
 #include "studies/stress_study.h"
 #include "studies/table3_study.h"
 #include "studies/thresholds_study.h"
@@ -207,11 +208,11 @@ int command_study(const std::vector<std::string>& argv) {
   }
   try {
     const auto start = std::chrono::steady_clock::now();
-    auto out = open_results(in.out_dir);
+    auto out = open_results_on_root(in.out_dir);
     std::vector<Check> checks;
     if (name == "table3") checks = run_table3_study(in.table3, out.get());
     else if (name == "dovetail") checks = run_dovetail_study(in.dovetail, out.get());
-    else if (name == "timing") checks = run_timing_studies(in.timing, out.get());
+    else if (name == "timing") checks = on_root_alone("timing", [&] { return run_timing_studies(in.timing, out.get()); });
     else if (name == "stress") checks = run_stress_study(in.stress, out.get());
     else
       checks = run_asymptotic_studies(in, name == "convergence" || name == "validity" || name == "asymptotics",
@@ -224,10 +225,9 @@ int command_study(const std::vector<std::string>& argv) {
       out->commit();
       std::printf("wrote %s\n", out->path().c_str());
     }
-    return report_checks(checks);
+    return command_status(report_checks(checks));
   } catch (const std::exception& e) {
-    std::cerr << "thinlayer study: " << e.what() << "\n";
-    return 2;
+    return command_failed("study", e);
   }
 }
 

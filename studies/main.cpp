@@ -7,6 +7,7 @@
 
 #include "studies/command_solve.h"
 #include "studies/command_study.h"
+#include "studies/process_group.h"
 
 namespace {
 
@@ -29,6 +30,7 @@ bool wants_help(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  thinlayer::ProcessGroup processes(argc, argv);  // MPI under mpirun/srun (SPEC §6); Ctrl-C cleanup
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::fputs(main_help, stdout);
@@ -36,6 +38,7 @@ int main(int argc, char** argv) {
   }
   const std::string command = args[0];
   args.erase(args.begin());
+  if ((command == "solve" || command == "verify") && !thinlayer::refuse_unless_one_process(command)) return 2;
   if (command == "solve") {
     if (wants_help(args)) return std::fputs(thinlayer::solve_help, stdout), 0;
     return thinlayer::command_solve(args);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "studies/environment.h"
+#include "studies/interrupt.h"
 
 namespace thinlayer {
 
@@ -13,6 +14,7 @@ std::unique_ptr<H5Writer> open_results(const std::string& dir) {
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create output directory '" + dir + "': " + ec.message());
   auto out = std::make_unique<H5Writer>(dir + "/results.h5");
+  remove_on_interrupt(out->temporary_path());
   out->attr("/", "layout", std::string(results_layout));
   out->attr("/", "layout_version", results_layout_version);
   write_environment(*out);

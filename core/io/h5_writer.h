@@ -43,6 +43,8 @@ class H5Writer {
   // Closes the file and moves it onto the target path. No other call is allowed afterwards.
   void commit();
   const std::string& path() const { return path_; }
+  // Where the data go until commit(): for a signal handler that must remove it (SPEC §4).
+  const std::string& temporary_path() const { return tmp_path_; }
 
   void group(const std::string& path);
 

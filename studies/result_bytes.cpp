@@ -1,0 +1,79 @@
+#include "studies/result_bytes.h"
+
+namespace thinlayer {
+
+void put(ByteWriter& w, const std::string& s) {
+  put(w, static_cast<std::uint64_t>(s.size()));
+  w.raw(s.data(), s.size());
+}
+void get(ByteReader& r, std::string& s) {
+  std::uint64_t n = 0;
+  get(r, n);
+  s.resize(n);
+  r.raw(s.data(), n);
+}
+
+void put(ByteWriter& w, const StatusCount& c) { put(w, c.gap), put(w, c.slide), put(w, c.stick); }
+void get(ByteReader& r, StatusCount& c) { get(r, c.gap), get(r, c.slide), get(r, c.stick); }
+
+void put(ByteWriter& w, const LayerCounts& c) { put(w, c.plus_face), put(w, c.minus_face), put(w, c.combined); }
+void get(ByteReader& r, LayerCounts& c) { get(r, c.plus_face), get(r, c.minus_face), get(r, c.combined); }
+
+void put(ByteWriter& w, const MeshQuality& q) {
+  put(w, q.min_angle_deg), put(w, q.max_angle_deg), put(w, q.max_aspect_ratio), put(w, q.min_scaled_jacobian);
+  put(w, q.cells);
+}
+void get(ByteReader& r, MeshQuality& q) {
+  get(r, q.min_angle_deg), get(r, q.max_angle_deg), get(r, q.max_aspect_ratio), get(r, q.min_scaled_jacobian);
+  get(r, q.cells);
+}
+
+void put(ByteWriter& w, const SolveReport& s) {
+  put(w, s.solver), put(w, s.u), put(w, s.r), put(w, s.w), put(w, s.iterations);
+  put(w, s.residual.interface), put(w, s.residual.bulk), put(w, s.tolerance), put(w, s.converged);
+  put(w, s.stop_cause), put(w, s.condition_estimate), put(w, s.wall_time_s), put(w, s.message);
+}
+void get(ByteReader& r, SolveReport& s) {
+  get(r, s.solver), get(r, s.u), get(r, s.r), get(r, s.w), get(r, s.iterations);
+  get(r, s.residual.interface), get(r, s.residual.bulk), get(r, s.tolerance), get(r, s.converged);
+  get(r, s.stop_cause), get(r, s.condition_estimate), get(r, s.wall_time_s), get(r, s.message);
+}
+
+void put(ByteWriter& w, const InterfaceFields& f) {
+  put(w, f.name), put(w, f.x), put(w, f.normal), put(w, f.length), put(w, f.jump_N), put(w, f.jump_T);
+  put(w, f.sigma_N), put(w, f.sigma_T), put(w, f.status);
+}
+void get(ByteReader& r, InterfaceFields& f) {
+  get(r, f.name), get(r, f.x), get(r, f.normal), get(r, f.length), get(r, f.jump_N), get(r, f.jump_T);
+  get(r, f.sigma_N), get(r, f.sigma_T), get(r, f.status);
+}
+
+void put(ByteWriter& w, const SceneRecord& s) {
+  put(w, s.id), put(w, s.text), put(w, s.numbers), put(w, s.integers), put(w, s.nodes), put(w, s.cells);
+  put(w, s.u), put(w, s.interfaces), put(w, s.reactions), put(w, s.combined_status);
+}
+void get(ByteReader& r, SceneRecord& s) {
+  get(r, s.id), get(r, s.text), get(r, s.numbers), get(r, s.integers), get(r, s.nodes), get(r, s.cells);
+  get(r, s.u), get(r, s.interfaces), get(r, s.reactions), get(r, s.combined_status);
+}
+
+void put(ByteWriter& w, const BarScene& s) { put(w, s.record), put(w, s.report), put(w, s.counts); }
+void get(ByteReader& r, BarScene& s) { get(r, s.record), get(r, s.report), get(r, s.counts); }
+
+void put(ByteWriter& w, const BarLayerScene& s) {
+  put(w, s.record), put(w, s.report), put(w, s.counts), put(w, s.layer_quality);
+}
+void get(ByteReader& r, BarLayerScene& s) {
+  get(r, s.record), get(r, s.report), get(r, s.counts), get(r, s.layer_quality);
+}
+
+void put(ByteWriter& w, const DovetailScene& s) {
+  put(w, s.record), put(w, s.report), put(w, s.limit), put(w, s.counts), put(w, s.layer_quality);
+  put(w, s.meshing_time_s);
+}
+void get(ByteReader& r, DovetailScene& s) {
+  get(r, s.record), get(r, s.report), get(r, s.limit), get(r, s.counts), get(r, s.layer_quality);
+  get(r, s.meshing_time_s);
+}
+
+}  // namespace thinlayer

@@ -1,0 +1,39 @@
+#include "studies/spread_command.h"
+
+#include <iostream>
+
+#include "studies/process_group.h"
+#include "studies/results_file.h"
+#include "studies/scene_batch.h"
+
+namespace thinlayer {
+
+std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir) {
+  if (!is_root()) return nullptr;
+  auto out = open_results(dir);
+  if (out) out->attr("/", "ranks", rank_count());
+  return out;
+}
+
+std::vector<Check> on_root_alone(const std::string& study, const std::function<std::vector<Check>()>& run) {
+  if (rank_count() == 1) return run();
+  if (is_root())
+    std::cerr << "[" << study << "] measures time, so it is never spread: rank 0 runs it alone while the other "
+              << rank_count() - 1 << " rank(s) wait\n";
+  std::vector<Check> checks;
+  if (is_root()) checks = run();
+  wait_for_each_other();
+  return checks;
+}
+
+int command_status(int status) { return broadcast_from_root(status); }
+
+int command_failed(const std::string& command, const std::exception& e) {
+  const bool everyone_knows = dynamic_cast<const SceneFailure*>(&e) != nullptr;
+  if (rank_count() == 1 || (everyone_knows && is_root())) std::cerr << "thinlayer " << command << ": " << e.what() << "\n";
+  if (rank_count() == 1 || everyone_knows) return 2;
+  std::cerr << "thinlayer " << command << " (rank " << rank() << " of " << rank_count() << "): " << e.what() << "\n";
+  abort_all_ranks(2);
+}
+
+}  // namespace thinlayer

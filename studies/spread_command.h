@@ -1,0 +1,32 @@
+#pragma once
+// What `thinlayer study` does around its studies when it runs as K MPI ranks (SPEC §6): every
+// rank runs the study, rank 0 alone writes the results file, all ranks end with rank 0's exit
+// status, and an error that only some ranks met stops all of them instead of leaving the
+// others waiting. With one process each of these is what the command did before.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/io/h5_writer.h"
+#include "studies/table3_study.h"
+
+namespace thinlayer {
+
+// open_results(dir) on rank 0, with the root attribute `ranks` (K, 1 for one process); null on
+// the other ranks (and for an empty dir).
+std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir);
+
+// A study that must not be spread (the timing study measures time): rank 0 runs it while the
+// other ranks wait, idle; they return no checks.
+std::vector<Check> on_root_alone(const std::string& study, const std::function<std::vector<Check>()>& run);
+
+// Rank 0's exit status, on every rank.
+int command_status(int status);
+
+// Reports an error of `thinlayer COMMAND` and returns exit status 2. A scene's failure is met
+// by every rank alike (studies/scene_batch.h) and printed once; any other error under K > 1
+// ranks may be this rank's alone, so it stops every rank (MPI_Abort, status 2).
+int command_failed(const std::string& command, const std::exception& e);
+
+}  // namespace thinlayer
