@@ -1,5 +1,6 @@
 #include "studies/scene_cache.h"
 
+#include "studies/scene_batch.h"
 #include "studies/stopwatch.h"
 
 #include <algorithm>
@@ -62,6 +63,22 @@ DovetailScene DovetailSceneCache::compute(const DovetailSceneDef& def) {
   return s;
 }
 
+namespace {
+
+// What a scene costs, relative to a limit-mode one (measured: a layer scene of the dovetail takes
+// about 100 times as long; README, "Studies over MPI ranks").
+double scene_cost(const DovetailSceneDef& d) { return d.mode == "limit" ? 1.0 : 100.0; }
+
+std::string scene_label(const DovetailSceneDef& d) {
+  std::ostringstream s;
+  s << "case " << d.law_case << " " << d.mode;
+  if (d.mode == "layer") s << " eps " << d.eps;
+  if (d.tolerance != SolverOptions{}.tolerance) s << " tol " << d.tolerance;
+  return s.str();
+}
+
+}  // namespace
+
 void DovetailSceneCache::solve(const std::vector<DovetailSceneDef>& defs) {
   std::vector<DovetailSceneDef> todo;
   std::set<std::string> queued;
@@ -72,46 +89,23 @@ void DovetailSceneCache::solve(const std::vector<DovetailSceneDef>& defs) {
     }
     todo.push_back(d);
   }
-  std::stable_partition(todo.begin(), todo.end(), [](const DovetailSceneDef& d) { return d.mode == "limit"; });
-  std::atomic<int> next{0}, done{0};
-  std::exception_ptr failure;
-  auto store = [&](const DovetailSceneDef& d, DovetailScene scene, double seconds) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const std::string text = d.definition(bulk_.options());
-    const bool converged = scene.report.converged;
-    scenes_[definition_hash(text)] = {text, std::make_unique<DovetailScene>(std::move(scene))};
+  // The limit scenes share the bulk's factorisation, built on first use: one after the other on
+  // each rank. The layer scenes, each with its own layer, on threads. Both spread over the ranks.
+  std::vector<DovetailScene> solved(todo.size());
+  SceneBatch limit(tag_, 1, verbose_), layer(tag_, threads_, verbose_);
+  std::vector<double> seconds;
+  for (SceneBatch* batch : {&limit, &layer}) {
+    for (size_t i = 0; i < todo.size(); ++i)
+      if ((todo[i].mode == "limit") == (batch == &limit))
+        batch->add(scene_label(todo[i]), scene_cost(todo[i]), solved[i], [this, d = todo[i]] { return compute(d); });
+    batch->run();
+    for (size_t k = 0; k < batch->size(); ++k) solve_time_s_ += batch->seconds(k);
+  }
+  for (size_t i = 0; i < todo.size(); ++i) {
+    const std::string text = todo[i].definition(bulk_.options());
+    scenes_[definition_hash(text)] = {text, std::make_unique<DovetailScene>(std::move(solved[i]))};
     ++solves_;
-    solve_time_s_ += seconds;
-    const int k = ++done;
-    if (verbose_)
-      std::fprintf(stderr, "[%s] %d/%zu  case %s %s%s  %s in %.2f s\n", tag_.c_str(), k, todo.size(), d.law_case.c_str(),
-                   d.mode.c_str(), d.mode == "layer" ? (" eps " + std::to_string(d.eps)).c_str() : "",
-                   converged ? "converged" : "NOT converged", seconds);
-  };
-  auto run = [&](const DovetailSceneDef& d) {
-    const auto start = Clock::now();
-    DovetailScene scene = compute(d);
-    store(d, std::move(scene), seconds_since(start));
-  };
-  size_t first_layer = 0;
-  for (; first_layer < todo.size() && todo[first_layer].mode == "limit"; ++first_layer) run(todo[first_layer]);
-  next = static_cast<int>(first_layer);
-  auto worker = [&] {
-    for (int i; (i = next++) < static_cast<int>(todo.size());) {
-      try {
-        run(todo[i]);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  const int n = std::min<int>(threads_, static_cast<int>(todo.size() - first_layer));
-  for (int t = 1; t < n; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  }
 }
 
 const DovetailScene& DovetailSceneCache::get(const DovetailSceneDef& def) {

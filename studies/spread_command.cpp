@@ -15,11 +15,12 @@ std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir) {
   return out;
 }
 
-std::vector<Check> on_root_alone(const std::string& study, const std::function<std::vector<Check>()>& run) {
+std::vector<Check> on_root_alone(const std::string& study, const std::string& why,
+                                 const std::function<std::vector<Check>()>& run) {
   if (rank_count() == 1) return run();
   if (is_root())
-    std::cerr << "[" << study << "] measures time, so it is never spread: rank 0 runs it alone while the other "
-              << rank_count() - 1 << " rank(s) wait\n";
+    std::cerr << "[" << study << "] rank 0 runs it alone while the other " << rank_count() - 1
+              << " rank(s) wait: " << why << "\n";
   std::vector<Check> checks;
   if (is_root()) checks = run();
   wait_for_each_other();

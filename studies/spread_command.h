@@ -17,9 +17,11 @@ namespace thinlayer {
 // the other ranks (and for an empty dir).
 std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir);
 
-// A study that must not be spread (the timing study measures time): rank 0 runs it while the
-// other ranks wait, idle; they return no checks.
-std::vector<Check> on_root_alone(const std::string& study, const std::function<std::vector<Check>()>& run);
+// A study that is not spread (the timing study measures time; see README for the others):
+// rank 0 runs it while the other ranks wait, idle, and return no checks. `why` ends the
+// message that says so.
+std::vector<Check> on_root_alone(const std::string& study, const std::string& why,
+                                 const std::function<std::vector<Check>()>& run);
 
 // Rank 0's exit status, on every rank.
 int command_status(int status);

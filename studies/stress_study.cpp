@@ -12,6 +12,7 @@
 #include "studies/bar_scenes.h"
 #include "studies/dovetail_scenes.h"
 #include "studies/format.h"
+#include "studies/scene_batch.h"
 #include "studies/stopwatch.h"
 
 namespace thinlayer {
@@ -157,6 +158,59 @@ bool all_finite(const SolveReport& r) {
   return r.u.allFinite() && r.r.allFinite() && std::isfinite(r.residual.value());
 }
 
+// A scene's outcome, and its record when there is one to write (finite).
+struct StressResult {
+  Outcome o;
+  bool has_record = false;
+  SceneRecord record;
+};
+
+void put(ByteWriter& w, const StressResult& r) {
+  put(w, r.o.outcome), put(w, r.o.message), put(w, r.o.finite), put(w, r.o.iterations), put(w, r.o.residual);
+  put(w, r.o.condition), put(w, r.o.time_s), put(w, r.o.solver), put(w, r.o.counts), put(w, r.has_record);
+  if (r.has_record) put(w, r.record);
+}
+void get(ByteReader& b, StressResult& r) {
+  get(b, r.o.outcome), get(b, r.o.message), get(b, r.o.finite), get(b, r.o.iterations), get(b, r.o.residual);
+  get(b, r.o.condition), get(b, r.o.time_s), get(b, r.o.solver), get(b, r.o.counts), get(b, r.has_record);
+  if (r.has_record) get(b, r.record);
+}
+
+StressResult solve_stress_scene(const StressScene& scene) {
+  StressResult result;
+  Outcome& o = result.o;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    Solved s = scene.run();
+    o.outcome = to_string(s.report.stop_cause);
+    o.message = s.report.message;
+    o.finite = all_finite(s.report);
+    o.iterations = s.report.iterations;
+    o.residual = s.report.residual.value();
+    o.condition = s.report.condition_estimate;
+    o.solver = s.report.solver;
+    o.counts = s.counts;
+    // The scenes vary what the usual ids leave out (f, the load scale, caps): name them here.
+    s.record.id = "stress-" + scene.id;
+    s.record.text["stress_scene"] = scene.what;
+    result.has_record = o.finite;
+    if (o.finite) result.record = std::move(s.record);
+  } catch (const std::exception& e) {
+    // A factorisation that finds the system singular throws; its message names the cause.
+    const std::string what = e.what();
+    o.outcome = what.rfind("singular system", 0) == 0 ? "singular system" : "error";
+    o.message = what;
+  }
+  o.time_s = seconds_since(start);
+  return result;
+}
+
+// For spreading over ranks (seconds on the development machine): layer scenes ~100x limit ones.
+double stress_cost(const StressScene& scene) {
+  if (scene.group == "thickness") return 20.0;
+  return scene.what.find("layer") != std::string::npos ? 2.0 : 0.2;
+}
+
 }  // namespace
 
 std::vector<Check> run_stress_study(const StressStudyOptions& options, H5Writer* out) {
@@ -166,31 +220,16 @@ std::vector<Check> run_stress_study(const StressStudyOptions& options, H5Writer*
               "condition", "time[s]", "gap/sl/st", "expected");
   std::vector<Check> checks;
   ColumnTable table;
-  for (const StressScene& scene : scenes) {
-    if (options.verbose) std::cerr << "[stress] " << scene.what << "\n";
-    Outcome o;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      Solved s = scene.run();
-      o.outcome = to_string(s.report.stop_cause);
-      o.message = s.report.message;
-      o.finite = all_finite(s.report);
-      o.iterations = s.report.iterations;
-      o.residual = s.report.residual.value();
-      o.condition = s.report.condition_estimate;
-      o.solver = s.report.solver;
-      o.counts = s.counts;
-      // The scenes vary what the usual ids leave out (f, the load scale, caps): name them here.
-      s.record.id = "stress-" + scene.id;
-      s.record.text["stress_scene"] = scene.what;
-      if (out && o.finite) write_scene(*out, s.record);
-    } catch (const std::exception& e) {
-      // A factorisation that finds the system singular throws; its message names the cause.
-      const std::string what = e.what();
-      o.outcome = what.rfind("singular system", 0) == 0 ? "singular system" : "error";
-      o.message = what;
-    }
-    o.time_s = seconds_since(start);
+  // Every scene builds its own bulk: spread over the MPI ranks (if any), one at a time on each.
+  std::vector<StressResult> results(scenes.size());
+  SceneBatch batch("stress", 1, options.verbose);
+  for (size_t i = 0; i < scenes.size(); ++i)
+    batch.add(scenes[i].what, stress_cost(scenes[i]), results[i], [&, i] { return solve_stress_scene(scenes[i]); });
+  batch.run();
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    const StressScene& scene = scenes[i];
+    const Outcome& o = results[i].o;
+    if (out && results[i].has_record) write_scene(*out, results[i].record);
     const bool named = o.outcome == to_string(StopCause::Converged) || o.outcome == to_string(StopCause::IterationCap) ||
                        o.outcome == to_string(StopCause::Singular) || o.outcome == to_string(StopCause::LossOfAccuracy);
     checks.push_back({"stress." + scene.id + ".named", named && o.finite,

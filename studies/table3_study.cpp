@@ -11,6 +11,7 @@
 
 #include "studies/bar_scenes.h"
 #include "studies/format.h"
+#include "studies/scene_batch.h"
 
 namespace thinlayer {
 
@@ -102,6 +103,43 @@ struct RowRun {
   double fast_time = 0, relaxation_time = 0, setup_time = 0, agreement = 0;
 };
 
+// One variant of the sensitivity study against one paper row.
+struct SensitivityRow {
+  Variant v;
+  int row;
+  StatusCount counts;
+  Transitions t;
+  double residual;
+  bool converged, matches;
+};
+
+// What travels between ranks (studies/scene_batch.h).
+void put(ByteWriter& w, const Transitions& t) { put(w, t.gap_contact), put(w, t.stick_slip); }
+void get(ByteReader& r, Transitions& t) { get(r, t.gap_contact), get(r, t.stick_slip); }
+void put(ByteWriter& w, const RowRun& r) {
+  put(w, r.fast), put(w, r.relaxation), put(w, r.fast_time), put(w, r.relaxation_time), put(w, r.setup_time);
+}
+void get(ByteReader& r, RowRun& x) {
+  get(r, x.fast), get(r, x.relaxation), get(r, x.fast_time), get(r, x.relaxation_time), get(r, x.setup_time);
+}
+void put(ByteWriter& w, const SensitivityRow& s) {
+  put(w, s.v.plane), put(w, s.v.element), put(w, s.v.diagonal), put(w, s.v.nx), put(w, s.v.ny), put(w, s.v.scale);
+  put(w, s.row), put(w, s.counts), put(w, s.t), put(w, s.residual), put(w, s.converged), put(w, s.matches);
+}
+void get(ByteReader& r, SensitivityRow& s) {
+  get(r, s.v.plane), get(r, s.v.element), get(r, s.v.diagonal), get(r, s.v.nx), get(r, s.v.ny), get(r, s.v.scale);
+  get(r, s.row), get(r, s.counts), get(r, s.t), get(r, s.residual), get(r, s.converged), get(r, s.matches);
+}
+
+// Cost estimates for spreading the scenes over ranks, in seconds on one core of the 2-core
+// development machine (measured with THINLAYER_SCENE_TIMES; README, "Studies over MPI ranks").
+// A limit solve grows about linearly with the mesh's nodes at these sizes.
+double limit_solve_cost(int nx, int ny) { return 0.01 * (nx + 1) * (ny + 1) / (33.0 * 33.0); }
+constexpr double row_cost = 1.0;     // per repeat: both solvers, the relaxation's sweeps dominate
+constexpr double layer_cost = 1.0;   // a layer scene of the bar (its own mesh and factorisation)
+
+size_t batch_size(size_t rows, size_t eps, size_t levels, size_t variants) { return rows * (1 + eps) + levels + variants; }
+
 }  // namespace
 
 std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer* out) {
@@ -114,34 +152,115 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
   };
 
   // 1. The six rows, both solvers, default model.
-  progress("six rows, both solvers, default mesh");
   BarBulk bulk(bar::MeshOptions{});
   SolverOptions fast_options;
   SolverOptions relaxation_options;
   relaxation_options.tolerance = options.relaxation_tolerance;
-  std::vector<RowRun> runs;
+  // Every scene of the study is independent: one batch, spread over the MPI ranks (if any).
+  SceneBatch batch("table3", 1, options.verbose);
+  std::vector<RowRun> runs(paper.size());
   for (size_t i = 0; i < paper.size(); ++i) {
-    RowRun run{paper[i], baseline[i], {}, {}, 0, 0, 0, 0};
-    const InterfaceLaw law = table3_law(paper[i]);
-    const std::string law_case = "table3-row-" + std::to_string(paper[i].row);
-    std::vector<double> fast_times, relaxation_times;
-    for (int rep = 0; rep < std::max(1, options.repeats); ++rep) {
-      run.fast = solve_bar(bulk, law, law_case, SolverKind::Fast, fast_options);
-      run.relaxation = solve_bar(bulk, law, law_case, SolverKind::Relaxation, relaxation_options);
-      fast_times.push_back(run.fast.report.wall_time_s);
-      relaxation_times.push_back(run.relaxation.report.wall_time_s);
+    runs[i].paper = paper[i];
+    runs[i].baseline = baseline[i];
+    batch.add("row " + std::to_string(paper[i].row) + ", both solvers", row_cost * options.repeats, runs[i], [&, i] {
+      RowRun run{paper[i], baseline[i], {}, {}, 0, 0, 0, 0};
+      const InterfaceLaw law = table3_law(paper[i]);
+      const std::string law_case = "table3-row-" + std::to_string(paper[i].row);
+      std::vector<double> fast_times, relaxation_times;
+      for (int rep = 0; rep < std::max(1, options.repeats); ++rep) {
+        run.fast = solve_bar(bulk, law, law_case, SolverKind::Fast, fast_options);
+        run.relaxation = solve_bar(bulk, law, law_case, SolverKind::Relaxation, relaxation_options);
+        fast_times.push_back(run.fast.report.wall_time_s);
+        relaxation_times.push_back(run.relaxation.report.wall_time_s);
+      }
+      run.fast_time = median(fast_times);
+      run.relaxation_time = median(relaxation_times);
+      run.setup_time = bulk.condensed().setup_time_s();
+      return run;
+    });
+  }
+
+  // Thin-layer mode at decreasing ε (each scene builds its own layer).
+  const std::vector<double> layer_eps = {1e-2, 1e-3, 1e-4};
+  std::vector<std::vector<BarLayerScene>> layer(paper.size(), std::vector<BarLayerScene>(layer_eps.size()));
+  for (size_t i = 0; i < paper.size(); ++i)
+    for (size_t k = 0; k < layer_eps.size(); ++k) {
+      const double eps = layer_eps[k];
+      std::ostringstream label;
+      label << "row " << paper[i].row << ", layer eps " << eps;
+      batch.add(label.str(), layer_cost, layer[i][k], [&, i, eps] {
+        return solve_bar_layer(bar::MeshOptions{}, paper[i].lambda_bar, paper[i].mu_bar, eps,
+                               "table3-row-" + std::to_string(paper[i].row), SolverKind::Fast, fast_options);
+      });
     }
-    run.fast_time = median(fast_times);
-    run.relaxation_time = median(relaxation_times);
-    run.setup_time = bulk.condensed().setup_time_s();
+
+  // 3. Transitions along AD under refinement (nx = ny), default model otherwise: one task per
+  // mesh, whose six laws share its factorisation.
+  std::vector<int> levels = {32};
+  if (options.refinement) levels = {32, 64, 128, 256};
+  std::vector<std::vector<Transitions>> refined_at(levels.size());  // per level, per row
+  for (size_t k = 0; k < levels.size(); ++k) {
+    const int n = levels[k];
+    batch.add("refinement " + std::to_string(n) + "x" + std::to_string(n), paper.size() * limit_solve_cost(n, n),
+              refined_at[k], [&, n] {
+                BarBulk fine(bar::MeshOptions{n, n, ElementType::Q1, TriangleDiagonal::Right, PlaneHypothesis::Strain});
+                std::vector<Transitions> t;
+                for (const Table3Row& p : paper) {
+                  const InterfaceLaw law = table3_law(p);
+                  const BarScene s =
+                      solve_bar(fine, law, "table3-row-" + std::to_string(p.row), SolverKind::Fast, fast_options);
+                  t.push_back(transitions(s.record.interfaces.at(0), law));
+                }
+                return t;
+              });
+  }
+
+  // 2. The sensitivity study: which variants of the model reproduce which paper rows. One task
+  // per mesh variant: its 5 scales x 6 rows share its factorisation.
+  std::vector<Variant> variants;
+  if (options.sensitivity)
+    for (PlaneHypothesis plane : {PlaneHypothesis::Strain, PlaneHypothesis::Stress})
+      for (int ny : {8, 16, 32, 64})
+        for (auto [element, diagonal] : {std::pair{ElementType::Q1, TriangleDiagonal::Right},
+                                         std::pair{ElementType::P1, TriangleDiagonal::Right},
+                                         std::pair{ElementType::P1, TriangleDiagonal::Left}})
+          for (int nx : {31, 32}) variants.push_back({plane, element, diagonal, nx, ny, 1.0});
+  const std::vector<double> scales = {1.0, 10.0, 100.0, 1e3, 1e4};
+  std::vector<std::vector<SensitivityRow>> by_variant(variants.size());
+  for (size_t k = 0; k < variants.size(); ++k) {
+    const Variant v = variants[k];
+    batch.add("sensitivity: " + v.name(), scales.size() * paper.size() * limit_solve_cost(v.nx, v.ny), by_variant[k],
+              [&, v] {
+                BarBulk variant_bulk(bar::MeshOptions{v.nx, v.ny, v.element, v.diagonal, v.plane});
+                std::vector<SensitivityRow> rows;
+                for (double scale : scales)
+                  for (const Table3Row& p : paper) {
+                    const InterfaceLaw law = InterfaceLaw::make(scale * p.lambda_bar, scale * p.mu_bar, bar::friction);
+                    const BarScene s = solve_bar(variant_bulk, law, "table3-row-" + std::to_string(p.row),
+                                                 SolverKind::Fast, fast_options);
+                    const StatusCount c = paper_comparable_counts(s, v.nx);
+                    rows.push_back({{v.plane, v.element, v.diagonal, v.nx, v.ny, scale}, p.row, c,
+                                    transitions(s.record.interfaces.at(0), law), s.report.residual.value(),
+                                    s.report.converged, c == p.paper});
+                  }
+                return rows;
+              });
+  }
+
+  progress(std::to_string(batch_size(paper.size(), layer_eps.size(), levels.size(), variants.size())) +
+           " tasks: six rows, thin-layer mode, refinement, sensitivity");
+  batch.run();
+  for (RowRun& run : runs) {
     const auto& gf = run.fast.record.interfaces.at(0);
     const auto& gr = run.relaxation.record.interfaces.at(0);
     const double diff = std::sqrt((gr.jump_N - gf.jump_N).squaredNorm() + (gr.jump_T - gf.jump_T).squaredNorm());
     const double norm = std::sqrt(gf.jump_N.squaredNorm() + gf.jump_T.squaredNorm());
     run.agreement = diff / norm;
-    runs.push_back(std::move(run));
-    progress("row " + std::to_string(paper[i].row) + " done");
   }
+  std::map<int, std::vector<Transitions>> refined;  // nx -> per row
+  for (size_t k = 0; k < levels.size(); ++k) refined[levels[k]] = refined_at[k];
+  std::vector<SensitivityRow> sensitivity;
+  for (const auto& rows : by_variant) sensitivity.insert(sensitivity.end(), rows.begin(), rows.end());
 
   std::printf("\nTable 3: the bar in limit mode (Q1 32x32, plane strain, f = 1; counts gap/slide/stick out of 32;\n"
               "status tolerance %g; fast solver tolerance %g, relaxation %g; times are medians of %d runs)\n\n",
@@ -174,13 +293,6 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
   }
 
   // Thin-layer mode at decreasing ε: the combined counts must approach the limit mode's.
-  progress("thin-layer mode, eps 1e-2, 1e-3, 1e-4");
-  const std::vector<double> layer_eps = {1e-2, 1e-3, 1e-4};
-  std::vector<std::vector<BarLayerScene>> layer(paper.size());
-  for (size_t i = 0; i < paper.size(); ++i)
-    for (double eps : layer_eps)
-      layer[i].push_back(solve_bar_layer(bar::MeshOptions{}, paper[i].lambda_bar, paper[i].mu_bar, eps,
-                                         "table3-row-" + std::to_string(paper[i].row), SolverKind::Fast, fast_options));
   std::printf("\nThin-layer mode (layer of thickness eps under AD, lambda_eps = eps lambda_bar, mu_eps = eps mu_bar,\n"
               "Signorini-Coulomb on both faces): combined counts (gap if either face is open, else slide if either\n"
               "slides), fast solver\n\n%3s | %9s |", "row", "limit");
@@ -201,19 +313,6 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
                       counts_text(baseline[i]), counts_text(thinnest.counts.combined), "exact"});
   }
 
-  // 3. Transitions along AD under refinement (nx = ny), default model otherwise.
-  std::map<int, std::vector<Transitions>> refined;  // nx -> per row
-  std::vector<int> levels = {32};
-  if (options.refinement) levels = {32, 64, 128, 256};
-  for (int n : levels) {
-    progress("refinement " + std::to_string(n) + "x" + std::to_string(n));
-    BarBulk fine(bar::MeshOptions{n, n, ElementType::Q1, TriangleDiagonal::Right, PlaneHypothesis::Strain});
-    for (const Table3Row& p : paper) {
-      const InterfaceLaw law = table3_law(p);
-      const BarScene s = solve_bar(fine, law, "table3-row-" + std::to_string(p.row), SolverKind::Fast, fast_options);
-      refined[n].push_back(transitions(s.record.interfaces.at(0), law));
-    }
-  }
   const double h = bar::side / 32;
   std::printf("\nTransitions along AD (mm from A), Q1, plane strain, nx = ny = %s; the paper's counts put them in:\n",
               options.refinement ? "32, 64, 128, 256" : "32");
@@ -229,37 +328,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
                 ss.c_str(), pc.slide > 0 ? paper_bracket(pc.gap + pc.slide, h).c_str() : "none");
   }
 
-  // 2. The sensitivity study: which variants of the model reproduce which paper rows.
-  struct SensitivityRow {
-    Variant v;
-    int row;
-    StatusCount counts;
-    Transitions t;
-    double residual;
-    bool converged, matches;
-  };
-  std::vector<SensitivityRow> sensitivity;
   if (options.sensitivity) {
-    for (PlaneHypothesis plane : {PlaneHypothesis::Strain, PlaneHypothesis::Stress}) {
-      for (int ny : {8, 16, 32, 64})
-        for (auto [element, diagonal] : {std::pair{ElementType::Q1, TriangleDiagonal::Right},
-                                         std::pair{ElementType::P1, TriangleDiagonal::Right},
-                                         std::pair{ElementType::P1, TriangleDiagonal::Left}})
-          for (int nx : {31, 32}) {
-            BarBulk variant_bulk(bar::MeshOptions{nx, ny, element, diagonal, plane});
-            for (double scale : {1.0, 10.0, 100.0, 1e3, 1e4})
-              for (const Table3Row& p : paper) {
-                const InterfaceLaw law = InterfaceLaw::make(scale * p.lambda_bar, scale * p.mu_bar, bar::friction);
-                const BarScene s = solve_bar(variant_bulk, law, "table3-row-" + std::to_string(p.row), SolverKind::Fast, fast_options);
-                const StatusCount c = paper_comparable_counts(s, nx);
-                sensitivity.push_back({{plane, element, diagonal, nx, ny, scale}, p.row, c,
-                                       transitions(s.record.interfaces.at(0), law), s.report.residual.value(),
-                                       s.report.converged, c == p.paper});
-              }
-          }
-      progress(std::string("sensitivity: plane ") + to_string(plane) + " done");
-    }
-
     std::printf("\nSensitivity study: %zu solves (plane strain/stress x ny 8,16,32,64 x Q1, P1/, P1\\ x nx 31,32 x\n"
                 "s 1,10,100,1e3,1e4 on lambda_bar and mu_bar x 6 rows). With nx = 31, D is counted as the 32nd node.\n\n",
                 sensitivity.size());
