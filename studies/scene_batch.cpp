@@ -127,15 +127,18 @@ void SceneBatch::throw_first_failure(const std::vector<Task>& tasks, const std::
   throw SceneFailure("scene '" + tasks[first].label + "'" + where + " failed: " + outcomes[first].failure + more);
 }
 
-// THINLAYER_SCENE_TIMES=FILE appends one tab-separated line per scene (tag, label, cost estimate, seconds,
-// rank): the measurements behind the cost estimates and the README's scaling figures.
+// THINLAYER_SCENE_TIMES=FILE appends one tab-separated line per scene (tag, batch number in
+// this process, label, cost estimate, seconds, rank): the measurements behind the cost
+// estimates and the README's scaling figures (scripts/project_scaling.py).
 void SceneBatch::log_times(const std::vector<Task>& tasks, const std::vector<Outcome>& outcomes,
                            const std::vector<int>& owner) const {
   const char* path = std::getenv("THINLAYER_SCENE_TIMES");
   if (!path || !is_root()) return;
+  static int batches = 0;
+  ++batches;
   std::ofstream f(path, std::ios::app);
   for (std::size_t i = 0; i < tasks.size(); ++i)
-    f << tag_ << "\t" << tasks[i].label << "\t" << tasks[i].cost << "\t" << outcomes[i].seconds << "\t" << owner[i] << "\n";
+    f << tag_ << "\t" << batches << "\t" << tasks[i].label << "\t" << tasks[i].cost << "\t" << outcomes[i].seconds << "\t" << owner[i] << "\n";
 }
 
 }  // namespace thinlayer

@@ -131,12 +131,15 @@ void get(ByteReader& r, SensitivityRow& s) {
   get(r, s.row), get(r, s.counts), get(r, s.t), get(r, s.residual), get(r, s.converged), get(r, s.matches);
 }
 
-// Cost estimates for spreading the scenes over ranks, in seconds on one core of the 2-core
-// development machine (measured with THINLAYER_SCENE_TIMES; README, "Studies over MPI ranks").
-// A limit solve grows about linearly with the mesh's nodes at these sizes.
-double limit_solve_cost(int nx, int ny) { return 0.01 * (nx + 1) * (ny + 1) / (33.0 * 33.0); }
-constexpr double row_cost = 1.0;     // per repeat: both solvers, the relaxation's sweeps dominate
-constexpr double layer_cost = 1.0;   // a layer scene of the bar (its own mesh and factorisation)
+// Cost estimates for spreading the scenes over ranks, in seconds on the 2-core development
+// machine (measured with THINLAYER_SCENE_TIMES; README, "Studies over MPI ranks"). A task of
+// limit solves on one mesh costs about its factorisation, ~2e-5 s per node (the sensitivity
+// variants' 30 solves: 0.02-0.04 s; refinement 256x256: 1.5 s). A row with both solvers and a
+// layer scene of the bar take 0.02-0.3 s, except a few that take seconds (row 6's relaxation,
+// 19500 sweeps; row 4's layer at eps 1e-3, 6.5 s), which nothing known beforehand predicts.
+double mesh_task_cost(int nx, int ny) { return 2e-5 * (nx + 1) * (ny + 1); }
+constexpr double row_cost = 0.05;    // per repeat: both solvers
+constexpr double layer_cost = 0.05;  // a layer scene of the bar (its own mesh and factorisation)
 
 size_t batch_size(size_t rows, size_t eps, size_t levels, size_t variants) { return rows * (1 + eps) + levels + variants; }
 
@@ -201,7 +204,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
   std::vector<std::vector<Transitions>> refined_at(levels.size());  // per level, per row
   for (size_t k = 0; k < levels.size(); ++k) {
     const int n = levels[k];
-    batch.add("refinement " + std::to_string(n) + "x" + std::to_string(n), paper.size() * limit_solve_cost(n, n),
+    batch.add("refinement " + std::to_string(n) + "x" + std::to_string(n), mesh_task_cost(n, n),
               refined_at[k], [&, n] {
                 BarBulk fine(bar::MeshOptions{n, n, ElementType::Q1, TriangleDiagonal::Right, PlaneHypothesis::Strain});
                 std::vector<Transitions> t;
@@ -229,7 +232,7 @@ std::vector<Check> run_table3_study(const Table3StudyOptions& options, H5Writer*
   std::vector<std::vector<SensitivityRow>> by_variant(variants.size());
   for (size_t k = 0; k < variants.size(); ++k) {
     const Variant v = variants[k];
-    batch.add("sensitivity: " + v.name(), scales.size() * paper.size() * limit_solve_cost(v.nx, v.ny), by_variant[k],
+    batch.add("sensitivity: " + v.name(), mesh_task_cost(v.nx, v.ny), by_variant[k],
               [&, v] {
                 BarBulk variant_bulk(bar::MeshOptions{v.nx, v.ny, v.element, v.diagonal, v.plane});
                 std::vector<SensitivityRow> rows;
