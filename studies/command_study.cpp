@@ -162,12 +162,7 @@ std::vector<Check> run_asymptotic_studies(const StudyInput& in, bool s2, bool s3
   }
   if (s4) {
     if (in.verbose) std::cerr << "[thresholds] limit-mode sweeps\n";
-    const std::vector<Check> s4 = on_root_alone("thresholds", "its sweeps and bisections are not spread yet", [&] {
-      std::vector<Check> c;
-      run_thresholds_study(in.thresholds, bulk, out, c);
-      return c;
-    });
-    checks.insert(checks.end(), s4.begin(), s4.end());
+    run_thresholds_study(in.thresholds, bulk, out, checks);
   }
   return checks;
 }
@@ -217,7 +212,9 @@ int command_study(const std::vector<std::string>& argv) {
     std::vector<Check> checks;
     if (name == "table3") checks = run_table3_study(in.table3, out.get());
     else if (name == "dovetail") checks = run_dovetail_study(in.dovetail, out.get());
-    else if (name == "timing") checks = on_root_alone("timing", "it measures time, so it is never spread", [&] { return run_timing_studies(in.timing, out.get()); });
+    else if (name == "timing")
+      checks = on_root_alone("timing", "it measures time, so it is never spread",
+                             [&] { return run_timing_studies(in.timing, out.get()); });
     else if (name == "stress") checks = run_stress_study(in.stress, out.get());
     else
       checks = run_asymptotic_studies(in, name == "convergence" || name == "validity" || name == "asymptotics",

@@ -25,6 +25,7 @@ namespace {
 int my_rank = 0;
 int ranks = 1;
 bool mpi_started = false;
+int working_alone = 0;
 
 // mpirun (Open MPI) and srun (PMIx or PMI-2) set these in every process they start.
 bool launched_by_mpi() {
@@ -68,6 +69,11 @@ ProcessGroup::~ProcessGroup() {
 
 int rank() { return my_rank; }
 int rank_count() { return ranks; }
+
+WorkingAlone::WorkingAlone() { ++working_alone; }
+WorkingAlone::~WorkingAlone() { --working_alone; }
+int spread_ranks() { return working_alone ? 1 : ranks; }
+int spread_rank() { return working_alone ? 0 : my_rank; }
 
 std::vector<std::string> all_gather(const std::string& mine) {
   if (ranks == 1) return {mine};

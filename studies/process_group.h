@@ -32,6 +32,19 @@ std::vector<std::string> all_gather(const std::string& mine);
 // Rank 0's value, on every rank.
 int broadcast_from_root(int value);
 
+// While one of these lives, this process works alone (rank 0 in on_root_alone): scene batches
+// then solve everything here instead of waiting for ranks that are not running the study.
+class WorkingAlone {
+ public:
+  WorkingAlone();
+  ~WorkingAlone();
+  WorkingAlone(const WorkingAlone&) = delete;
+  WorkingAlone& operator=(const WorkingAlone&) = delete;
+};
+// The ranks a scene batch spreads over: rank_count(), or 1 while working alone.
+int spread_ranks();
+int spread_rank();
+
 // Rank 0 works alone (the timing study) while the others wait without spinning a core: they
 // call this and return when rank 0 calls it too.
 void wait_for_each_other();

@@ -36,15 +36,15 @@ void SceneBatch::run() {
   tasks.swap(tasks_);  // the next batch starts empty, whatever happens to this one
   std::vector<double> costs;
   for (const Task& t : tasks) costs.push_back(t.cost);
-  const std::vector<int> owner = assign_longest_first(costs, rank_count());
+  const std::vector<int> owner = assign_longest_first(costs, spread_ranks());
   std::vector<std::size_t> mine;
   for (std::size_t i = 0; i < tasks.size(); ++i)
-    if (owner[i] == rank()) mine.push_back(i);
+    if (owner[i] == spread_rank()) mine.push_back(i);
   // Several threads: the longest first, so that no long scene starts last.
   if (threads_ > 1) std::stable_sort(mine.begin(), mine.end(), [&](auto a, auto b) { return costs[a] > costs[b]; });
 
   std::vector<Outcome> outcomes(tasks.size());
-  const bool spread = rank_count() > 1;
+  const bool spread = spread_ranks() > 1;
   solve_on_threads(tasks, mine, outcomes, spread);
   if (spread) gather(outcomes);
   throw_first_failure(tasks, outcomes, owner);
@@ -80,7 +80,7 @@ void SceneBatch::solve_on_threads(const std::vector<Task>& tasks, const std::vec
       if (verbose_) {
         std::lock_guard<std::mutex> lock(print);
         ++done;
-        const std::string who = rank_count() > 1 ? "rank " + std::to_string(rank()) + ": " : "";
+        const std::string who = spread_ranks() > 1 ? "rank " + std::to_string(rank()) + ": " : "";
         std::fprintf(stderr, "[%s] %s%d/%zu  %s  %s in %.2f s\n", tag_.c_str(), who.c_str(), done, mine.size(),
                      task.label.c_str(), o.solved ? "solved" : "FAILED", o.seconds);
       }
@@ -122,7 +122,7 @@ void SceneBatch::throw_first_failure(const std::vector<Task>& tasks, const std::
       first = std::min(first, i);
     }
   if (failures == 0) return;
-  const std::string where = rank_count() > 1 ? " on rank " + std::to_string(owner[first]) : "";
+  const std::string where = spread_ranks() > 1 ? " on rank " + std::to_string(owner[first]) : "";
   const std::string more = failures > 1 ? " (and " + std::to_string(failures - 1) + " other scenes)" : "";
   throw SceneFailure("scene '" + tasks[first].label + "'" + where + " failed: " + outcomes[first].failure + more);
 }

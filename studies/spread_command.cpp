@@ -22,7 +22,10 @@ std::vector<Check> on_root_alone(const std::string& study, const std::string& wh
     std::cerr << "[" << study << "] rank 0 runs it alone while the other " << rank_count() - 1
               << " rank(s) wait: " << why << "\n";
   std::vector<Check> checks;
-  if (is_root()) checks = run();
+  if (is_root()) {
+    const WorkingAlone alone;
+    checks = run();
+  }
   wait_for_each_other();
   return checks;
 }

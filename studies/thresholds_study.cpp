@@ -12,6 +12,7 @@
 #include "studies/bisection.h"
 #include "studies/error_norms.h"
 #include "studies/format.h"
+#include "studies/scene_batch.h"
 
 namespace thinlayer {
 
@@ -33,7 +34,10 @@ const double sigma_ref = dovetail::mu_m * U / 1.0;                // daN/mm², L
 struct Response {
   Eigen::VectorXd u;      // free DOFs, mm
   Eigen::VectorXd sigma;  // (σ_N, σ_T) per S node, daN/mm²
+  bool converged = false;
 };
+void put(ByteWriter& w, const Response& r) { put(w, r.u), put(w, r.sigma), put(w, r.converged); }
+void get(ByteReader& b, Response& r) { get(b, r.u), get(b, r.sigma), get(b, r.converged); }
 
 class Solver {
  public:
@@ -44,12 +48,17 @@ class Solver {
     for (size_t k = 0; k < S.nodes.size(); ++k) weights_[2 * k] = weights_[2 * k + 1] = S.nodes[k].length;
   }
   // Counts the solves that did not converge.
-  Response solve(const InterfaceLaw& law) {
-    const ContactProblem problem(bulk_.system(), {dovetail::make_limit_interface(bulk_.model(), law)});
-    const SolveReport r = solve_fast(problem, bulk_.condensed(), options_);
+  Response solve(const InterfaceLaw& law) { return count(solve_uncounted(law)); }
+  // For a solve made elsewhere (on another rank): counted as if made here.
+  Response count(Response r) {
     ++solves_;
     if (!r.converged) ++failures_;
-    return {r.u, r.r.cwiseQuotient(weights_)};
+    return r;
+  }
+  Response solve_uncounted(const InterfaceLaw& law) {
+    const ContactProblem problem(bulk_.system(), {dovetail::make_limit_interface(bulk_.model(), law)});
+    const SolveReport r = solve_fast(problem, bulk_.condensed(), options_);
+    return {r.u, r.r.cwiseQuotient(weights_), r.converged};
   }
   // The error of `replaced` against `finite` in one quantity: "u" or "sigma".
   double error(const std::string& quantity, const Response& finite, const Response& replaced) const {
@@ -79,6 +88,9 @@ std::pair<std::string, double> crossing(const std::vector<double>& x, const std:
   return {"found", bisect_log(error_at, {x[k], e[k], x[k + 1], e[k + 1]}, tau, steps).eps_within};
 }
 
+// A limit-mode solve of the dovetail on its shared factorisation (seconds, for spreading).
+constexpr double limit_cost = 0.02;
+
 }  // namespace
 
 std::vector<ThresholdCrossing> run_thresholds_study(const ThresholdsStudyOptions& options, DovetailLimitBulk& bulk,
@@ -98,15 +110,32 @@ std::vector<ThresholdCrossing> run_thresholds_study(const ThresholdsStudyOptions
               "('u', scale U) (dovetail, limit mode); ratio = lambda_bar/(lambda_m/L)\n"
               "with mu_bar = mu_m/L, or mu_bar/(mu_m/L) with lambda_bar = lambda_m/L; paper: 0 below %g, inf above %g\n\n",
               options.threshold_low, options.threshold_high);
+  // The sweeps' solves (the 0 and inf laws and every ratio), spread over the MPI ranks (if any),
+  // one at a time on each (they share the bulk's factorisation); the bisections below depend
+  // on them and run on every rank alike.
+  std::vector<double> ratio;
+  for (int i = 0; i <= n; ++i)
+    ratio.push_back(options.ratio_min * std::pow(10.0, static_cast<double>(i) / options.points_per_decade));
+  std::vector<std::vector<Response>> swept(sweeps.size(), std::vector<Response>(ratio.size() + 2));
+  SceneBatch batch("thresholds", 1, false);
+  for (size_t k = 0; k < sweeps.size(); ++k) {
+    const Sweep& s = sweeps[k];
+    batch.add(s.param + " 0 law", limit_cost, swept[k][0], [&, k] { return solver.solve_uncounted(sweeps[k].law(0.0)); });
+    batch.add(s.param + " inf law", limit_cost, swept[k][1], [&, k] { return solver.solve_uncounted(sweeps[k].law(inf)); });
+    for (size_t i = 0; i < ratio.size(); ++i)
+      batch.add(s.param + " ratio " + sci(ratio[i], 2), limit_cost, swept[k][i + 2],
+                [&, k, i] { return solver.solve_uncounted(sweeps[k].law(ratio[i] * sweeps[k].reference)); });
+  }
+  batch.run();
+
   std::vector<ThresholdCrossing> crossings;
-  for (const Sweep& s : sweeps) {
-    const Response zero_law = solver.solve(s.law(0.0)), inf_law = solver.solve(s.law(inf));
+  for (size_t k = 0; k < sweeps.size(); ++k) {
+    const Sweep& s = sweeps[k];
+    const Response zero_law = solver.count(swept[k][0]), inf_law = solver.count(swept[k][1]);
     const auto finite = [&](double ratio) { return solver.solve(s.law(ratio * s.reference)); };
-    std::vector<double> ratio;
     std::map<std::string, std::vector<double>> e_zero, e_inf;  // per quantity
-    for (int i = 0; i <= n; ++i) {
-      ratio.push_back(options.ratio_min * std::pow(10.0, static_cast<double>(i) / options.points_per_decade));
-      const Response r = finite(ratio.back());
+    for (size_t i = 0; i < ratio.size(); ++i) {
+      const Response r = solver.count(swept[k][i + 2]);
       for (const std::string& q : quantities) {
         e_zero[q].push_back(solver.error(q, r, zero_law));
         e_inf[q].push_back(solver.error(q, r, inf_law));

@@ -62,8 +62,11 @@ TEST(SceneBatch, EveryResultInPlaceAndInOrder) {
     }
     ASSERT_EQ(batch.size(), 80u);
     // Spread over K ranks, each solves only its share; one process solves them all.
-    if (rank_count() == 1) EXPECT_EQ(solved_here, 40);
-    else EXPECT_LT(solved_here, 40);
+    if (rank_count() == 1) {
+      EXPECT_EQ(solved_here, 40);
+    } else {
+      EXPECT_LT(solved_here, 40);
+    }
   }
 }
 
@@ -82,13 +85,32 @@ TEST(SceneBatch, AThrowingSceneIsNamedOnEveryRank) {
     const std::string what = e.what();
     EXPECT_NE(what.find("scene 'scene 4'"), std::string::npos) << what;
     EXPECT_NE(what.find("singular system: nothing holds it"), std::string::npos) << what;
-    if (rank_count() > 1) EXPECT_NE(what.find("on rank "), std::string::npos) << what;
+    if (rank_count() > 1) {
+      EXPECT_NE(what.find("on rank "), std::string::npos) << what;
+    }
   }
   // The batch is usable again afterwards: the next run starts empty.
   int again = 0;
   batch.add("after", 1, again, [] { return 7; });
   batch.run();
   EXPECT_EQ(again, 7);
+}
+
+TEST(SceneBatch, RankZeroWorkingAloneSolvesEverythingItself) {
+  // What on_root_alone does: the other ranks are not running the batch, so rank 0 must not
+  // wait for them (under two ranks this test would hang without WorkingAlone).
+  if (is_root()) {
+    const WorkingAlone alone;
+    SceneBatch batch("alone");
+    std::vector<int> out(5, -1);
+    int solved_here = 0;
+    for (int i = 0; i < 5; ++i)
+      batch.add("scene " + std::to_string(i), 1, out[i], [i, &solved_here] { return ++solved_here, i; });
+    batch.run();
+    EXPECT_EQ(solved_here, 5);
+    EXPECT_EQ(out, (std::vector<int>{0, 1, 2, 3, 4}));
+  }
+  wait_for_each_other();
 }
 
 TEST(ResultBytes, ASceneRecordComesBackBitForBit) {
