@@ -174,6 +174,14 @@ void print_report(const SolveReport& report, const SceneRecord& record) {
   std::printf("  %s\n  residual: interface %.3e, bulk %.3e; iterations %d; solve %.4f s (+ setup %.4f s)\n",
               report.message.c_str(), report.residual.interface, report.residual.bulk, report.iterations,
               report.wall_time_s, record.numbers.at("setup_time_s"));
+  // SPEC §1.5: the residual body by body and interface by interface.
+  std::printf("  residual per body:");
+  for (size_t b = 0; b < record.residual_per_body.size(); ++b)
+    std::printf(" %s %.3e", record.body_names[b].c_str(), record.residual_per_body[b]);
+  std::printf("; per interface:");
+  for (size_t i = 0; i < record.residual_per_interface.size(); ++i)
+    std::printf(" %s %.3e", record.interface_names[i].c_str(), record.residual_per_interface[i]);
+  std::printf("\n");
 }
 
 void print_layer(const MeshQuality& q, double eps, const LayerCounts& c) {

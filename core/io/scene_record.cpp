@@ -85,6 +85,11 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   s.numbers["residual"] = report.residual.value();
   s.numbers["residual_interface"] = report.residual.interface;
   s.numbers["residual_bulk"] = report.residual.bulk;
+  // SPEC §1.5: each body's and each interface's residual, with their names.
+  s.residual_per_body = report.residual.per_body;
+  for (int b = 0; b < problem.system().num_bodies(); ++b) s.body_names.push_back(problem.system().body_name(b));
+  s.residual_per_interface = report.residual.per_interface;
+  for (const Interface& i : problem.interfaces()) s.interface_names.push_back(i.name);
   s.numbers["tolerance"] = report.tolerance;
   s.numbers["wall_time_s"] = report.wall_time_s;
   s.numbers["status_tolerance"] = status_tolerance;
@@ -110,6 +115,8 @@ void require_finite_results(const SceneRecord& scene) {
   for (const auto& [name, R] : scene.reactions) check("reaction " + name, R.data(), R.data() + 2);
   for (const char* name : {"residual", "residual_interface", "residual_bulk"})
     if (scene.numbers.count(name)) check(name, &scene.numbers.at(name), &scene.numbers.at(name) + 1);
+  check("residual_per_body", scene.residual_per_body.begin(), scene.residual_per_body.end());
+  check("residual_per_interface", scene.residual_per_interface.begin(), scene.residual_per_interface.end());
 }
 
 }  // namespace
@@ -146,6 +153,19 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
   }
   for (const auto& [name, R] : scene.reactions) file.dataset(g + "/reactions/" + name, std::vector<double>{R.x(), R.y()});
   if (!scene.combined_status.empty()) file.dataset(g + "/combined_status", scene.combined_status);
+  auto joined = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ",") + n;
+    return out;
+  };
+  if (!scene.residual_per_body.empty()) {
+    file.dataset(g + "/residual_per_body", scene.residual_per_body);
+    file.attr(g + "/residual_per_body", "bodies", joined(scene.body_names));
+  }
+  if (!scene.residual_per_interface.empty()) {
+    file.dataset(g + "/residual_per_interface", scene.residual_per_interface);
+    file.attr(g + "/residual_per_interface", "interfaces", joined(scene.interface_names));
+  }
 }
 
 }  // namespace thinlayer

@@ -36,6 +36,9 @@ struct SceneRecord {
   std::map<std::string, Eigen::Vector2d> reactions;  // daN per unit thickness
   // Layer mode: the status of each point of S through both faces (empty in limit mode).
   std::vector<int> combined_status;
+  // SPEC §1.5: the residual of each body and each interface (dimensionless), with their names.
+  std::vector<double> residual_per_body, residual_per_interface;
+  std::vector<std::string> body_names, interface_names;
 };
 
 // Interface fields of a solution: jumps g = B u + g_D, stresses σ = r / ℓ, statuses with the
