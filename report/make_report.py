@@ -166,9 +166,16 @@ def make_report(results_path, out_dir):
         shutil.rmtree(building, ignore_errors=True)
 
 
+class Interrupted(BaseException):
+    """SIGINT or SIGTERM, as an exception: the half-built report is removed on the way out."""
+
+    def __init__(self, signum):
+        super().__init__(f"signal {signum}")
+        self.signum = signum
+
+
 def stop_on_signal(signum, _frame):
-    """SIGTERM as an exception, so that the half-built report is removed on the way out."""
-    raise KeyboardInterrupt(f"signal {signum}")
+    raise Interrupted(signum)
 
 
 def main(argv):
@@ -179,9 +186,13 @@ def main(argv):
         print(f"make_report: expected 2 arguments, got {len(argv) - 1}; {USAGE}", file=sys.stderr)
         return EXIT_BAD_INPUT
     start = time.monotonic()
-    signal.signal(signal.SIGTERM, stop_on_signal)
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(signum, stop_on_signal)
     try:
         make_report(argv[1], argv[2])
+    except Interrupted as e:  # cleaned up; now die of the signal, as the caller expects
+        signal.signal(e.signum, signal.SIG_DFL)
+        os.kill(os.getpid(), e.signum)
     except ReportError as e:
         print(f"make_report: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT
