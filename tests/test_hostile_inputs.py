@@ -22,6 +22,7 @@ import tempfile
 import time
 
 import h5py
+import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MAKE_REPORT = os.path.join(HERE, "..", "report", "make_report.py")
@@ -242,7 +243,23 @@ def written_cases():
         check("solve file", (g["interface/S/node_minus"][()] == -1).all(), "the foundation is -1")
         nodes, plus, x = g["mesh/nodes"][()], g["interface/S/node_plus"][()], g["interface/S/x"][()]
         check("solve file", abs(nodes[plus] - x).max() == 0, "node_plus does not name the interface nodes")
-    print("case solve file: layout 2, /environment, /checks, units, legend, node_plus/minus, body names")
+        # The cell stresses balance the applied tractions: the mean sigma_22 of the top row of
+        # cells is F2 = -5 and the mean sigma_11 of the left column is -F1 = -10 (daN/mm^2),
+        # since the rows and columns of a structured mesh carry the whole load.
+        centres = nodes[g["mesh/cells"][()]].mean(axis=1)
+        stress = g["mesh/cell_stress"][()]
+        top, left = centres[:, 1] > centres[:, 1].max() - 1e-9, centres[:, 0] < centres[:, 0].min() + 1e-9
+        check("solve file", abs(stress[top, 1].mean() + 5) < 1e-9 and abs(stress[left, 0].mean() + 10) < 1e-9,
+              f"cell stresses {stress[top, 1].mean()}, {stress[left, 0].mean()}")
+        # The force convention as written: interface forces + reactions + loads balance.
+        i = g["interface/S"]
+        normal = i["normal"][()]
+        tangent = np.stack([normal[:, 1], -normal[:, 0]], axis=1)
+        force = ((-i["sigma_N"][()])[:, None] * normal + i["sigma_T"][()][:, None] * tangent) * i["length"][()][:, None]
+        total = force.sum(axis=0) + g["reactions/D"][()] + g["reactions/DE"][()] + np.array([10 * 40, -5 * 40])
+        check("solve file", abs(total).max() < 1e-9 * 400, f"the force convention does not balance: {total}")
+    print("case solve file: layout 2, /environment, /checks, units, legend, node_plus/minus, body names, "
+          "cell stresses and the force convention balancing the loads")
     before = snapshot(folder)
     r = run([sys.executable, MAKE_REPORT, "scene.h5", "."], folder)
     after = snapshot(folder)
