@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make libeigen3-dev libsuitesparse-dev libgmsh-dev libhdf5-dev
-          libsiconos-numerics-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-h5py)
+          libsiconos-numerics-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-h5py
+          libcli11-dev nlohmann-json3-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
