@@ -110,8 +110,6 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
       run.w = take_polished ? exact.w : w_regularised;
       run.residual = std::min(polished, regularised);
       run.statuses = statuses;
-      run.singular = exact.singular;
-      run.rcond = exact.rcond;
     }
     if (options.verbose)
       std::fprintf(stderr, "  layer (dual) outer step %d: %d Newton steps so far, residual polished %.3e, "
@@ -121,6 +119,10 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     // 3. Not yet: the anchor moves to where the layer is, and the next step starts there.
     w_anchor = w_regularised;
   }
+  // The conditioning of the final statuses on the true (unregularised) problem, for the report.
+  const Step last = solve_statuses(c, run.statuses);
+  run.singular = last.singular;
+  run.rcond = last.rcond;
   return run;
 }
 
