@@ -105,7 +105,7 @@ std::vector<Scene> scene_set() {
   scenes.push_back({"stress-bar-layer-floating", "singular system", [] {
                       bar::MeshOptions lifted;
                       lifted.load_scale = -1;
-                      const Table3Row& row1 = load_table3_paper().at(0);
+                      const Table3Row row1 = load_table3_paper().at(0);
                       BarLayerScene s = solve_bar_layer(lifted, row1.lambda_bar, row1.mu_bar, 1e-3, "table3-row-1",
                                                         SolverKind::Fast, {});
                       return row_of("stress-bar-layer-floating", s.record, s.report, s.counts.combined);
