@@ -3,15 +3,23 @@
 
     /usr/bin/python3 report/make_report.py RESULTS.h5 OUT_DIR
 
-writes OUT_DIR/index.html and OUT_DIR/figures/*.png. The report is built in a temporary
-sibling of OUT_DIR and renamed onto it only once complete, so OUT_DIR is either the previous
-report or the new one, never half of one. A missing or unreadable file, a file that is not a
-thinlayer results file, or an older layout: one line on stderr, exit status 2, nothing
-written. (Run with Debian's /usr/bin/python3, which sees python3-matplotlib and python3-h5py.)
+writes OUT_DIR/index.html and OUT_DIR/figures/*.png, and nothing else (SPEC §4, "Nothing
+lost"): every other file in OUT_DIR -- its input, summary.json, the user's notes -- is left as
+it was. The report is built in a hidden temporary folder inside OUT_DIR; once complete, its
+figures and index.html are renamed into place (index.html last, through a symbolic link if it
+is one), then the previous report's figures that the new one does not have are removed. The
+previous report's files are known from its index.html, which must be one this script wrote
+(its title); a file in the way that the report did not write is refused, not replaced.
+A missing or unreadable file, a file that is not a thinlayer results file (foreign), or an
+older layout: one line on stderr, exit status 2, nothing written. SIGTERM and SIGINT remove
+the half-built report. (Run with Debian's /usr/bin/python3, which sees python3-matplotlib
+and python3-h5py.)
 """
 
 import os
+import re
 import shutil
+import signal
 import sys
 import tempfile
 import time
@@ -83,20 +91,55 @@ def write_report(f, results_path, out_dir):
         out.write(html)
 
 
-def replace_directory(built, target):
-    """Put the finished report `built` where `target` is, replacing any previous report."""
-    if not os.path.lexists(target):
-        os.rename(built, target)
-        return
-    previous = tempfile.mkdtemp(prefix="." + os.path.basename(target) + ".previous-", dir=os.path.dirname(target))
-    os.rmdir(previous)  # only its unique name is wanted
-    os.rename(target, previous)
+TITLE = "thinlayer verification report"
+
+
+def previous_figures(index_path):
+    """The figures an earlier report in this folder wrote (named in its index.html), or
+    None when there is no earlier report. A file there that this script did not write is
+    refused."""
+    if not os.path.lexists(index_path):
+        return None
     try:
-        os.rename(built, target)
-    except OSError:
-        os.rename(previous, target)  # put the old report back rather than leave nothing
-        raise
-    shutil.rmtree(previous, ignore_errors=True)
+        with open(index_path, encoding="utf-8") as page_file:
+            html = page_file.read()
+    except (OSError, UnicodeDecodeError) as e:
+        raise ReportError(f"{index_path}: exists and is not a report this script wrote ({e}); "
+                          f"move it or choose another folder") from None
+    if f"<title>{TITLE}</title>" not in html:
+        raise ReportError(f"{index_path}: exists and is not a report this script wrote; "
+                          f"move it or choose another folder")
+    return set(re.findall(r'<img src="figures/([^"/]+\.png)"', html))
+
+
+def check_input_is_safe(results_path, out_dir):
+    """The report never writes over its own input."""
+    source = os.path.realpath(results_path)
+    if source == os.path.realpath(os.path.join(out_dir, "index.html")) or \
+            os.path.dirname(source) == os.path.realpath(os.path.join(out_dir, "figures")):
+        raise ReportError(f"{results_path}: the report would write over its own input; "
+                          f"choose another OUT_DIR")
+
+
+def install(built, out_dir, previous):
+    """Move the finished report `built` into out_dir: figures, then index.html."""
+    figures = os.path.join(out_dir, "figures")
+    new = sorted(os.listdir(os.path.join(built, "figures")))
+    if os.path.lexists(figures) and not os.path.isdir(figures):
+        raise ReportError(f"{figures}: exists and is not a directory")
+    for name in new:
+        if os.path.lexists(os.path.join(figures, name)) and name not in (previous or set()):
+            raise ReportError(f"{os.path.join(figures, name)}: exists and was not written by this report; "
+                              f"move it or choose another folder")
+    os.makedirs(figures, exist_ok=True)
+    for name in new:
+        os.replace(os.path.join(built, "figures", name), os.path.join(figures, name))
+    os.replace(os.path.join(built, "index.html"), os.path.realpath(os.path.join(out_dir, "index.html")))
+    for name in sorted((previous or set()) - set(new)):  # the earlier report's, no longer shown
+        try:
+            os.remove(os.path.join(figures, name))
+        except FileNotFoundError:
+            pass
 
 
 def make_report(results_path, out_dir):
@@ -104,18 +147,35 @@ def make_report(results_path, out_dir):
     if os.path.lexists(out_dir) and not os.path.isdir(out_dir):
         raise ReportError(f"{out_dir}: exists and is not a directory")
     with open_results(results_path) as f:  # refuses a bad file before anything is written
-        parent = os.path.dirname(out_dir)
+        check_input_is_safe(results_path, out_dir)
+        previous = previous_figures(os.path.join(out_dir, "index.html"))
+        created = not os.path.lexists(out_dir)
         try:
-            os.makedirs(parent, exist_ok=True)
-            building = tempfile.mkdtemp(prefix="." + os.path.basename(out_dir) + ".building-", dir=parent)
+            os.makedirs(out_dir, exist_ok=True)
+            building = tempfile.mkdtemp(prefix=".report-building-", dir=out_dir)
         except OSError as e:
-            raise ReportError(f"cannot write beside {out_dir}: {e.strerror or e}") from None
+            raise ReportError(f"cannot write in {out_dir}: {e.strerror or e}") from None
         try:
             write_report(f, results_path, building)
-            replace_directory(building, out_dir)
+            install(building, out_dir, previous)
         except BaseException:
             shutil.rmtree(building, ignore_errors=True)
+            if created:
+                shutil.rmtree(out_dir, ignore_errors=True)  # it held nothing but this report
             raise
+        shutil.rmtree(building, ignore_errors=True)
+
+
+class Interrupted(BaseException):
+    """SIGINT or SIGTERM, as an exception: the half-built report is removed on the way out."""
+
+    def __init__(self, signum):
+        super().__init__(f"signal {signum}")
+        self.signum = signum
+
+
+def stop_on_signal(signum, _frame):
+    raise Interrupted(signum)
 
 
 def main(argv):
@@ -126,8 +186,13 @@ def main(argv):
         print(f"make_report: expected 2 arguments, got {len(argv) - 1}; {USAGE}", file=sys.stderr)
         return EXIT_BAD_INPUT
     start = time.monotonic()
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(signum, stop_on_signal)
     try:
         make_report(argv[1], argv[2])
+    except Interrupted as e:  # cleaned up; now die of the signal, as the caller expects
+        signal.signal(e.signum, signal.SIG_DFL)
+        os.kill(os.getpid(), e.signum)
     except ReportError as e:
         print(f"make_report: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT

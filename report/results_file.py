@@ -11,7 +11,11 @@ import h5py
 import numpy as np
 
 LAYOUT = "thinlayer-results"
-LAYOUT_VERSION = 1
+# Version 2 (issue 15) adds to version 1 only what describes the data (units, the status
+# legend, node_plus/node_minus, mesh/cell_body, mesh/cell_stress) and makes `solve` files
+# results files; the report reads both. Version 0 (no version attribute) is older.
+LAYOUT_VERSION = 2
+READABLE_VERSIONS = (1, 2)
 
 
 class ReportError(Exception):
@@ -50,16 +54,15 @@ def open_results(path):
 def check_layout(f, path):
     """Refuse a file whose root attributes do not name this layout and version."""
     if "layout" not in f.attrs:
-        if "scenes" in f or "studies" in f:
-            # Files written before the layout attributes existed: their groups may differ.
-            raise ReportError(f"{path}: an older thinlayer results layout (no root attribute "
-                              f"'layout'); re-run thinlayer to write layout {LAYOUT!r} "
-                              f"version {LAYOUT_VERSION}")
-        raise ReportError(f"{path}: not a thinlayer results file (no root attribute 'layout')")
+        # Whatever its groups: thinlayer has written the attribute on every results file since
+        # layout 1, and on every --out file since layout 2.
+        raise ReportError(f"{path}: a foreign HDF5 file, not a thinlayer results file (no root "
+                          f"attribute 'layout'; a `thinlayer solve` file from before layout 2 "
+                          f"has none either: re-run it)")
     layout = text(f.attrs["layout"])
     if layout != LAYOUT:
-        raise ReportError(f"{path}: not a thinlayer results file (layout = {layout!r}, "
-                          f"expected {LAYOUT!r})")
+        raise ReportError(f"{path}: a foreign HDF5 file, not a thinlayer results file "
+                          f"(layout = {layout!r}, expected {LAYOUT!r})")
     if "layout_version" not in f.attrs:
         raise ReportError(f"{path}: an older thinlayer results layout (no root attribute "
                           f"'layout_version')")
@@ -68,9 +71,10 @@ def check_layout(f, path):
     except (TypeError, ValueError):
         raise ReportError(f"{path}: unreadable layout_version "
                           f"{text(f.attrs['layout_version'])!r}") from None
-    if version < LAYOUT_VERSION:
+    if version < min(READABLE_VERSIONS):
         raise ReportError(f"{path}: an older thinlayer results layout (version {version}, "
-                          f"this report reads version {LAYOUT_VERSION})")
+                          f"this report reads versions {READABLE_VERSIONS[0]} to {LAYOUT_VERSION}); "
+                          f"re-run thinlayer to write version {LAYOUT_VERSION}")
     if version > LAYOUT_VERSION:
         raise ReportError(f"{path}: a newer thinlayer results layout (version {version}, "
                           f"this report reads version {LAYOUT_VERSION}); update report/")

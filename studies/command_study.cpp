@@ -8,15 +8,20 @@
 #include <iostream>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
+#include <set>
 
 #include "core/io/h5_writer.h"
+#include "core/io/output_target.h"
 #include "studies/args.h"
 #include "studies/stopwatch.h"
 #include "studies/summary_json.h"
 #include "studies/convergence_study.h"
 #include "studies/dovetail_study.h"
+#include "studies/format.h"
 #include "studies/options.h"
+#include "studies/process_group.h"
 #include "studies/report_runner.h"
 #include "studies/results_file.h"
 #include "studies/skip_study.h"
@@ -30,6 +35,9 @@
 namespace thinlayer {
 
 const char* const study_help = R"(usage: thinlayer study NAME [--out DIR] [options]
+
+Without --out the study prints its tables and saves nothing. An option the study does not
+read is refused, as is an option given twice or a stray argument.
 
 Studies:
   table3       S1: the bar's Table 3, both solvers, paper vs the project's baseline, the
@@ -61,8 +69,9 @@ Options:
                      scenes at eps <= 1e-6 and the slowest contrast; timing: bar levels
                      32-128, peers at 32 and 64, dovetail h 0.05 and 0.025, layer eps 1e-4
   --quiet            no progress lines on stderr
-  --cases LETTERS    dovetail studies: the cases to run (default abcdefghi)
-  --eps LIST         dovetail studies: comma-separated thicknesses (default 1e-2,5e-3,1e-3,5e-4,1e-4)
+  --cases LETTERS    dovetail studies: the cases to run, each once (default abcdefghi)
+  --eps LIST         dovetail studies: comma-separated thicknesses, each in (0, 0.1]
+                     (default 1e-2,5e-3,1e-3,5e-4,1e-4)
   --tolerance T      S2/S3: the SPEC residual the scenes are solved to (default 1e-8; case d is
                      re-solved at 1e-10 to show the distances do not depend on it)
   --threads N        S2/S3: layer-mode scenes solved in parallel (default 2)
@@ -83,7 +92,8 @@ and stress) and writes
   DIR/summary.json         every check: id, pass, expected, got, tolerance; and the timings
   DIR/report/index.html    the report, with its figures (made from results.h5 alone:
                            /usr/bin/python3 report/make_report.py DIR/results.h5 DIR/report)
-Options: those of `thinlayer study` (e.g. --quick, --cases, --eps, --tolerance, --threads).
+Options: those of `thinlayer study` that the studies it runs read: --out, --quiet, --repeats,
+--quick, --cases, --eps, --tolerance, --threads, --bisection-steps.
 Exit status: 0 only if every check passes; 1 if one fails; 2 on bad input or a failure to
 write an output.
 )";
@@ -103,10 +113,30 @@ struct StudyInput {
   bool verbose = true;
 };
 
-StudyInput parse(const std::vector<std::string>& argv, bool require_out) {
+// The options each study reads; any other is refused rather than silently ignored.
+const std::map<std::string, std::set<std::string>> study_options = {
+    {"table3", {"out", "quiet", "repeats", "quick"}},
+    {"dovetail", {"out", "quiet", "cases", "eps", "relaxation-cap", "friction-path"}},
+    {"convergence", {"out", "quiet", "cases", "eps", "tolerance", "threads"}},
+    {"validity", {"out", "quiet", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
+    {"thresholds", {"out", "quiet"}},
+    {"asymptotics", {"out", "quiet", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
+    {"timing", {"out", "quiet", "repeats", "quick"}},
+    {"stress", {"out", "quiet", "quick"}},
+    // verify runs table3, asymptotics, the quick timing and stress.
+    {"verify", {"out", "quiet", "repeats", "quick", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
+};
+
+// The dovetail's thickest thin layer (its layer meshes stop there; SPEC §4: a layer thicker
+// than makes geometric sense is refused).
+constexpr double thickest_dovetail_layer = 0.1;
+
+StudyInput parse(const std::vector<std::string>& argv, const std::string& name) {
   const Args args(argv, {"out", "repeats", "cases", "eps", "relaxation-cap", "tolerance", "threads", "bisection-steps",
                    "friction-path"},
                   {"quick", "quiet"});
+  require_only(args, study_options.at(name), name == "verify" ? "verify" : "study " + name);
+  const bool require_out = name == "verify";
   StudyInput in;
   in.out_dir = args.text("out", "");
   if (require_out && in.out_dir.empty()) throw std::invalid_argument("--out DIR is required");
@@ -124,10 +154,15 @@ StudyInput parse(const std::vector<std::string>& argv, bool require_out) {
   for (char c : in.dovetail.cases)
     if (c < 'a' || c > 'i') throw std::invalid_argument("--cases: unknown case '" + std::string(1, c) + "' (expected a..i)");
   if (in.dovetail.cases.empty()) throw std::invalid_argument("--cases: give at least one case");
+  for (size_t i = 0; i < in.dovetail.cases.size(); ++i)
+    if (in.dovetail.cases.find(in.dovetail.cases[i]) != i)
+      throw std::invalid_argument("--cases: case '" + std::string(1, in.dovetail.cases[i]) + "' is given twice");
   if (args.has("eps")) {
     in.dovetail.eps = parse_number_list("eps", args.text("eps", ""));
     for (double eps : in.dovetail.eps)
       if (!(eps > 0) || std::isinf(eps)) throw std::invalid_argument("--eps: thicknesses must be finite and > 0");
+      else if (eps > thickest_dovetail_layer)
+        throw std::invalid_argument("--eps: " + plain(eps) + " is no thin layer for the dovetail: at most 0.1 (a tenth of its size)");
   }
   if (args.has("friction-path"))
     in.dovetail.friction_path = friction_path_multipliers(args.text("friction-path", ""), dovetail::friction);
@@ -201,14 +236,15 @@ int command_study(const std::vector<std::string>& argv) {
     if (std::find(names.begin(), names.end(), name) == names.end())
       throw std::invalid_argument("unknown study '" + name +
                                   "' (expected table3, dovetail, convergence, validity, thresholds, asymptotics, timing or stress)");
-    in = parse(std::vector<std::string>(argv.begin() + 1, argv.end()), false);
+    in = parse(std::vector<std::string>(argv.begin() + 1, argv.end()), name);
   } catch (const std::exception& e) {
-    std::cerr << "thinlayer study: " << e.what() << "\n";
+    if (is_root()) std::cerr << "thinlayer study: " << e.what() << "\n";  // every rank parsed the same
     return 2;
   }
   try {
     const auto start = std::chrono::steady_clock::now();
     auto out = open_results_on_root(in.out_dir);
+    if (in.out_dir.empty()) std::printf("(no --out DIR: the results are printed, not saved)\n");
     std::vector<Check> checks;
     if (name == "table3") checks = run_table3_study(in.table3, out.get());
     else if (name == "dovetail") checks = run_dovetail_study(in.dovetail, out.get());
@@ -222,11 +258,12 @@ int command_study(const std::vector<std::string>& argv) {
                                       name == "thresholds" || name == "asymptotics", out.get());
     std::printf("\nstudy %s: %.1f s wall time\n", name.c_str(),
                 seconds_since(start));
-    if (out) {
+    on_root([&] {
+      if (!out) return;
       write_checks(*out, checks);
       out->commit();
       std::printf("wrote %s\n", out->path().c_str());
-    }
+    });
     return command_status(report_checks(checks));
   } catch (const std::exception& e) {
     return command_failed("study", e);
@@ -236,7 +273,7 @@ int command_study(const std::vector<std::string>& argv) {
 int command_verify(const std::vector<std::string>& argv) {
   StudyInput in;
   try {
-    in = parse(argv, true);
+    in = parse(argv, "verify");
   } catch (const std::exception& e) {
     std::cerr << "thinlayer verify: " << e.what() << "\n";
     return 2;
@@ -262,13 +299,7 @@ int command_verify(const std::vector<std::string>& argv) {
     write_checks(*out, checks);
     out->commit();
     const std::string summary = in.out_dir + "/summary.json";
-    const std::string tmp = summary + ".tmp";
-    {
-      std::ofstream f(tmp);
-      f << summary_json(checks, timings);
-      if (!f) throw std::runtime_error("cannot write '" + summary + "'");
-    }
-    std::filesystem::rename(tmp, summary);
+    write_text_atomically(summary, summary_json(checks, timings));
     std::cerr << "[verify] report\n";
     const std::string report_dir = in.out_dir + "/report";
     run_report(out->path(), report_dir);

@@ -15,6 +15,8 @@ bar::MeshOptions parse_bar_mesh(const Args& args) {
   if (element == "Q1") m.element = ElementType::Q1;
   else if (element == "P1") m.element = ElementType::P1;
   else throw std::invalid_argument("unknown element '" + element + "' (expected Q1 or P1)");
+  if (args.has("diagonal") && m.element != ElementType::P1)
+    throw std::invalid_argument("--diagonal applies to P1 elements only (add --element P1)");
   const std::string diagonal = args.text("diagonal", "right");
   if (diagonal == "right") m.diagonal = TriangleDiagonal::Right;
   else if (diagonal == "left") m.diagonal = TriangleDiagonal::Left;
@@ -34,8 +36,11 @@ SolverOptions parse_solver_options(const Args& args) {
   SolverOptions o;
   o.tolerance = args.number("tolerance", o.tolerance);
   if (!(o.tolerance > 0) || std::isinf(o.tolerance)) throw std::invalid_argument("--tolerance must be finite and > 0");
+  // 0 is the solver's "use the default"; from the command line the default is had by leaving
+  // the option out, so an explicit 0 is a mistake.
   o.max_iterations = args.integer("max-iterations", 0);
-  if (o.max_iterations < 0) throw std::invalid_argument("--max-iterations must be >= 0");
+  if (args.has("max-iterations") && o.max_iterations < 1)
+    throw std::invalid_argument("--max-iterations must be >= 1 (leave it out for the default)");
   o.omega = args.number("omega", o.omega);
   if (!(o.omega > 0 && o.omega < 2)) throw std::invalid_argument("--omega must be in (0, 2)");
   return o;

@@ -16,7 +16,6 @@
 #include <thread>
 
 #include "studies/blas_threads.h"
-#include "studies/interrupt.h"
 
 namespace thinlayer {
 
@@ -48,7 +47,6 @@ void wait_politely(MPI_Request& request) {
 }  // namespace
 
 ProcessGroup::ProcessGroup(int& argc, char**& argv) {
-  install_interrupt_handlers();
   use_one_blas_thread();
   if (!launched_by_mpi()) return;
   int provided = 0;

@@ -8,6 +8,7 @@
 // which scenes each solves (studies/scene_batch.h) and that only rank 0 prints tables and
 // writes files: the other ranks' stdout goes to /dev/null (their progress lines on stderr
 // stay, prefixed with their rank).
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,13 @@ int spread_rank();
 // Rank 0 works alone (the timing study) while the others wait without spinning a core: they
 // call this and return when rank 0 calls it too.
 void wait_for_each_other();
+
+// An error that every rank meets at the same point of the run and knows of (a scene that failed,
+// studies/scene_batch.h; an output rank 0 cannot write): rank 0 reports it, once, and every rank
+// ends with exit status 2 without MPI_Abort.
+struct ErrorOnEveryRank : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // Stops every rank at once, with this exit status: for an error that only some ranks met,
 // whose peers would otherwise wait for them forever.

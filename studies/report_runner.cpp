@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/io/output_target.h"
+
 extern char** environ;
 
 namespace thinlayer {
@@ -32,8 +34,12 @@ void run_report(const std::string& results_h5, const std::string& out_dir) {
   pid_t pid = 0;
   if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
     throw std::runtime_error("cannot run the report's interpreter '" + python + "'");
+  // SIGINT/SIGTERM reach the report too, which then removes its half-built files.
+  set_signal_child(pid);
   int status = 0;
-  if (waitpid(pid, &status, 0) < 0) throw std::runtime_error("lost the report process");
+  const bool lost = waitpid(pid, &status, 0) < 0;
+  set_signal_child(0);
+  if (lost) throw std::runtime_error("lost the report process");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error("the report failed (" + script + " on " + results_h5 + "), see its message above");
 }

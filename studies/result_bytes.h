@@ -5,7 +5,9 @@
 // bit: that is what makes a spread study's file identical to a one-process run's.
 //
 // put(w, x) appends x; get(r, x) reads it back in the same order. Every type a study hands
-// over has one overload pair here.
+// over has one overload pair here. A field added to one of these structs must be added to its
+// pair too, or a spread study's file silently lacks it (tests/test_scene_batch.cpp round-trips
+// them; the CTest mpi_two_ranks_convergence compares the files).
 #include <cstring>
 #include <map>
 #include <stdexcept>

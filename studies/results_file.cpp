@@ -3,22 +3,25 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/io/output_target.h"
 #include "studies/environment.h"
-#include "studies/interrupt.h"
 
 namespace thinlayer {
+
+std::unique_ptr<H5Writer> open_results_file(const std::string& file) {
+  auto out = std::make_unique<H5Writer>(file);
+  out->attr("/", "layout", std::string(results_layout));
+  out->attr("/", "layout_version", results_layout_version);
+  write_environment(*out);
+  return out;
+}
 
 std::unique_ptr<H5Writer> open_results(const std::string& dir) {
   if (dir.empty()) return nullptr;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error("cannot create output directory '" + dir + "': " + ec.message());
-  auto out = std::make_unique<H5Writer>(dir + "/results.h5");
-  remove_on_interrupt(out->temporary_path());
-  out->attr("/", "layout", std::string(results_layout));
-  out->attr("/", "layout_version", results_layout_version);
-  write_environment(*out);
-  return out;
+  if (ec) throw OutputError("cannot create output directory '" + dir + "': " + ec.message());
+  return open_results_file(dir + "/results.h5");
 }
 
 void write_checks(H5Writer& out, const std::vector<Check>& checks) {
@@ -31,7 +34,6 @@ void write_checks(H5Writer& out, const std::vector<Check>& checks) {
     got.push_back(c.got);
     tolerance.push_back(c.tolerance);
   }
-  if (checks.empty()) return;
   out.dataset("/checks/id", id);
   out.dataset("/checks/pass", pass);
   out.dataset("/checks/expected", expected);

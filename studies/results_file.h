@@ -13,14 +13,21 @@ namespace thinlayer {
 // Root attributes `layout` and `layout_version`: the report refuses files without them or
 // with another version. Bump the version whenever a reader would misread the old layout.
 constexpr const char* results_layout = "thinlayer-results";
-constexpr int results_layout_version = 1;
+// Version 2 (issue 15): every --out file (a `solve` file too) is a results file, /checks is
+// always there (empty datasets if no check), and the scenes describe themselves (units,
+// status legend, node_plus/node_minus, mesh/cell_body). The report reads versions 1 and 2.
+constexpr int results_layout_version = 2;
 
-// Creates DIR if needed and opens DIR/results.h5 (written on commit only), marked with the
-// layout and the environment (/environment: compiler, library versions, commit). Null for an
-// empty DIR.
+// Opens FILE (written on commit only), marked with the layout and the environment
+// (/environment: compiler, library versions, commit).
+std::unique_ptr<H5Writer> open_results_file(const std::string& file);
+
+// Creates DIR if needed and opens DIR/results.h5 as open_results_file does. Null for an
+// empty DIR. Throws OutputError if DIR cannot be created.
 std::unique_ptr<H5Writer> open_results(const std::string& dir);
 
-// /checks: datasets id, pass (0/1), expected, got, tolerance — one entry per check.
+// /checks: datasets id, pass (0/1), expected, got, tolerance — one entry per check, empty
+// datasets if there is none (SPEC §4: the group is always there).
 void write_checks(H5Writer& out, const std::vector<Check>& checks);
 
 }  // namespace thinlayer

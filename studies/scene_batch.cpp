@@ -4,11 +4,15 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <mutex>
 #include <numeric>
+#include <sstream>
 #include <thread>
 
+#include "core/io/output_target.h"
 #include "studies/process_group.h"
 #include "studies/stopwatch.h"
 
@@ -129,16 +133,24 @@ void SceneBatch::throw_first_failure(const std::vector<Task>& tasks, const std::
 
 // THINLAYER_SCENE_TIMES=FILE appends one tab-separated line per scene (tag, batch number in
 // this process, label, cost estimate, seconds, rank): the measurements behind the cost
-// estimates and the README's scaling figures (scripts/project_scaling.py).
+// estimates and the README's scaling figures (scripts/project_scaling.py). Rank 0 writes it
+// like every other output (SPEC §4, core/io/output_target.h): the old lines and the new ones to
+// a temporary file, renamed onto the target; a FIFO or a device is refused (exit status 2).
 void SceneBatch::log_times(const std::vector<Task>& tasks, const std::vector<Outcome>& outcomes,
                            const std::vector<int>& owner) const {
   const char* path = std::getenv("THINLAYER_SCENE_TIMES");
   if (!path || !is_root()) return;
   static int batches = 0;
   ++batches;
-  std::ofstream f(path, std::ios::app);
+  std::ostringstream log;
+  if (std::filesystem::exists(resolve_output_target(path))) {
+    std::ifstream old(path, std::ios::binary);
+    if (!old) throw OutputError("cannot read '" + std::string(path) + "' (THINLAYER_SCENE_TIMES) to append to it");
+    log << std::string(std::istreambuf_iterator<char>(old), {});
+  }
   for (std::size_t i = 0; i < tasks.size(); ++i)
-    f << tag_ << "\t" << batches << "\t" << tasks[i].label << "\t" << tasks[i].cost << "\t" << outcomes[i].seconds << "\t" << owner[i] << "\n";
+    log << tag_ << "\t" << batches << "\t" << tasks[i].label << "\t" << tasks[i].cost << "\t" << outcomes[i].seconds << "\t" << owner[i] << "\n";
+  write_text_atomically(path, log.str());
 }
 
 }  // namespace thinlayer

@@ -30,13 +30,14 @@
 #include <string>
 #include <vector>
 
+#include "studies/process_group.h"
 #include "studies/result_bytes.h"
 
 namespace thinlayer {
 
 // A scene of a batch failed (on some rank): thrown on every rank alike.
-struct SceneFailure : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct SceneFailure : ErrorOnEveryRank {
+  using ErrorOnEveryRank::ErrorOnEveryRank;
 };
 
 // The rank of each task: tasks by decreasing cost, each to the rank with the least cost so far

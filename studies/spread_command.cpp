@@ -8,10 +8,23 @@
 
 namespace thinlayer {
 
+void on_root(const std::function<void()>& run) {
+  if (rank_count() == 1) return run();
+  std::string error;
+  if (is_root()) try {
+      run();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  if (broadcast_from_root(error.empty() ? 0 : 1)) throw ErrorOnEveryRank(error);
+}
+
 std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir) {
-  if (!is_root()) return nullptr;
-  auto out = open_results(dir);
-  if (out) out->attr("/", "ranks", rank_count());
+  std::unique_ptr<H5Writer> out;
+  on_root([&] {
+    out = open_results(dir);
+    if (out) out->attr("/", "ranks", rank_count());
+  });
   return out;
 }
 
@@ -33,7 +46,7 @@ std::vector<Check> on_root_alone(const std::string& study, const std::string& wh
 int command_status(int status) { return broadcast_from_root(status); }
 
 int command_failed(const std::string& command, const std::exception& e) {
-  const bool everyone_knows = dynamic_cast<const SceneFailure*>(&e) != nullptr;
+  const bool everyone_knows = dynamic_cast<const ErrorOnEveryRank*>(&e) != nullptr;
   if (rank_count() == 1 || (everyone_knows && is_root())) std::cerr << "thinlayer " << command << ": " << e.what() << "\n";
   if (rank_count() == 1 || everyone_knows) return 2;
   std::cerr << "thinlayer " << command << " (rank " << rank() << " of " << rank_count() << "): " << e.what() << "\n";

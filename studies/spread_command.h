@@ -13,8 +13,14 @@
 
 namespace thinlayer {
 
-// open_results(dir) on rank 0, with the root attribute `ranks` (K, 1 for one process); null on
-// the other ranks (and for an empty dir).
+// Runs `run` on rank 0 alone (the writing of an output). Every rank learns whether it threw, and
+// then throws too: the exception itself in one process, ErrorOnEveryRank with its message under
+// K ranks, so that an output rank 0 may not write (SPEC §4: exit status 2) stops every rank at
+// the same point and is reported once. Every rank must call it.
+void on_root(const std::function<void()>& run);
+
+// open_results(dir) on rank 0 (through on_root), with the root attribute `ranks` (K, 1 for one
+// process); null on the other ranks (and for an empty dir).
 std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir);
 
 // A study that is not spread (the timing study measures time; see README for the others):
@@ -26,8 +32,9 @@ std::vector<Check> on_root_alone(const std::string& study, const std::string& wh
 // Rank 0's exit status, on every rank.
 int command_status(int status);
 
-// Reports an error of `thinlayer COMMAND` and returns exit status 2. A scene's failure is met
-// by every rank alike (studies/scene_batch.h) and printed once; any other error under K > 1
+// Reports an error of `thinlayer COMMAND` and returns exit status 2. An ErrorOnEveryRank (a
+// scene's failure, studies/scene_batch.h; an output rank 0 refused) is met by every rank alike
+// and printed once; any other error under K > 1
 // ranks may be this rank's alone, so it stops every rank (MPI_Abort, status 2).
 int command_failed(const std::string& command, const std::exception& e);
 

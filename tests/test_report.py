@@ -249,12 +249,12 @@ PASSING_CHECKS = [("table3.row1.fast.baseline", 1, "3/14/15", "3/14/15", "exact"
 FAILING_CHECK = ("table3.row2.relaxation.baseline", 0, "2/6/24", "2/7/23", "exact")
 
 
-def write_results(path, layout=True, failing=False, complete=True):
+def write_results(path, layout=True, failing=False, complete=True, version=2):
     """A results file; `complete` adds every study group, otherwise only table3 (a quick run)."""
     with h5py.File(path, "w") as f:
         if layout:
             f.attrs["layout"] = "thinlayer-results"
-            f.attrs["layout_version"] = 1
+            f.attrs["layout_version"] = version
         for row in range(1, 7):
             write_bar_scene(f, row, "fast")
             write_bar_scene(f, row, "relaxation")
@@ -308,8 +308,18 @@ class ReportTest(unittest.TestCase):
 
     def assertNothingLeftBehind(self):
         """No half-built report: only the inputs and any earlier report remain."""
-        leftovers = [n for n in os.listdir(self.dir) if ".building-" in n or ".previous-" in n]
+        leftovers = [os.path.join(root, n) for root, dirs, files in os.walk(self.dir) for n in dirs + files
+                     if ".building-" in n or ".previous-" in n]
         self.assertEqual(leftovers, [])
+
+    def listing(self, folder):
+        """Every file under folder with its bytes."""
+        result = {}
+        for root, _, files in os.walk(folder):
+            for name in files:
+                with open(os.path.join(root, name), "rb") as content:
+                    result[os.path.relpath(os.path.join(root, name), folder)] = content.read()
+        return result
 
     def test_complete_file_gives_every_figure(self):
         write_results(self.path("results.h5"))
@@ -334,12 +344,51 @@ class ReportTest(unittest.TestCase):
         self.assertIn("factorisation_reuse_table3", html)
         self.assertNothingLeftBehind()
 
-    def test_without_layout_attributes_nothing_is_written(self):
+    def test_without_layout_attributes_the_file_is_called_foreign(self):
         write_results(self.path("old.h5"), layout=False)
         message = self.assertBadInput(self.path("old.h5"), self.path("report"))
-        self.assertIn("older", message)
+        self.assertIn("foreign", message)
+        self.assertNotIn("older", message)
         self.assertFalse(os.path.exists(self.path("report")))
         self.assertNothingLeftBehind()
+
+    def test_reads_the_current_and_the_previous_layout_refuses_an_older_one(self):
+        for version in (1, 2):
+            write_results(self.path(f"v{version}.h5"), complete=False, version=version)
+            r = run_report(self.path(f"v{version}.h5"), self.path(f"report{version}"))
+            self.assertEqual(r.returncode, 0, r.stderr)
+        write_results(self.path("v0.h5"), complete=False, version=0)
+        self.assertIn("older", self.assertBadInput(self.path("v0.h5"), self.path("report0")))
+
+    def test_writes_only_its_own_files_into_the_folder_of_its_input(self):
+        """Issue 15: the report once deleted every file in OUT_DIR, its input included."""
+        write_results(self.path("results.h5"), complete=False)
+        with open(self.path("notes.txt"), "w") as notes:
+            notes.write("the user's notes")
+        os.makedirs(self.path("sub"))
+        with open(self.path(os.path.join("sub", "data.csv")), "w") as data:
+            data.write("1,2")
+        before = self.listing(self.dir)
+        r = run_report(self.path("results.h5"), self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        after = self.listing(self.dir)
+        for name, content in before.items():
+            self.assertEqual(after.get(name), content, name)
+        added = sorted(set(after) - set(before))
+        self.assertIn("index.html", added)
+        self.assertTrue(all(n == "index.html" or n.startswith("figures" + os.sep) for n in added), added)
+        self.assertNothingLeftBehind()
+
+    def test_refuses_to_replace_an_index_html_it_did_not_write(self):
+        write_results(self.path("results.h5"), complete=False)
+        out = self.path("site")
+        os.makedirs(out)
+        with open(os.path.join(out, "index.html"), "w") as page_file:
+            page_file.write("<html>the user's own page</html>")
+        self.assertIn("not a report this script wrote", self.assertBadInput(self.path("results.h5"), out))
+        with open(os.path.join(out, "index.html")) as page_file:
+            self.assertEqual(page_file.read(), "<html>the user's own page</html>")
+        self.assertEqual(os.listdir(out), ["index.html"])
 
     def test_bad_inputs_leave_an_existing_report_alone(self):
         out = self.path("report")
@@ -351,7 +400,7 @@ class ReportTest(unittest.TestCase):
         with h5py.File(self.path("foreign.h5"), "w") as f:
             f.attrs["layout"] = "something-else"
         with h5py.File(self.path("newer.h5"), "w") as f:
-            f.attrs["layout"], f.attrs["layout_version"] = "thinlayer-results", 2
+            f.attrs["layout"], f.attrs["layout_version"] = "thinlayer-results", 3
         for name in ("missing.h5", "not.h5", "foreign.h5", "newer.h5"):
             self.assertBadInput(self.path(name), out)
             with open(os.path.join(out, "index.html")) as page:
@@ -384,16 +433,23 @@ class ReportTest(unittest.TestCase):
                        "/environment", "/studies/table3/sensitivity"):
             self.assertRegex(html, re.escape(absent) + r"[^<]*\): not in this results file")
 
-    def test_replaces_an_existing_report(self):
-        write_results(self.path("results.h5"), complete=False)
+    def test_replaces_an_existing_report_and_only_its_figures(self):
+        """The previous report's figures that the new one lacks go; a user's file stays."""
+        write_results(self.path("results.h5"))
         out = self.path("report")
-        os.makedirs(os.path.join(out, "figures"))
-        with open(os.path.join(out, "figures", "stale.png"), "w") as stale:
-            stale.write("stale")
-        r = run_report(self.path("results.h5"), out)
+        self.assertEqual(run_report(self.path("results.h5"), out).returncode, 0)
+        before = set(os.listdir(os.path.join(out, "figures")))
+        with open(os.path.join(out, "figures", "mine.txt"), "w") as mine:
+            mine.write("mine")
+        write_results(self.path("quick.h5"), complete=False)
+        r = run_report(self.path("quick.h5"), out)
         self.assertEqual(r.returncode, 0, r.stderr)
-        self.assertFalse(os.path.exists(os.path.join(out, "figures", "stale.png")))
-        self.assertTrue(os.path.isfile(os.path.join(out, "index.html")))
+        after = set(os.listdir(os.path.join(out, "figures")))
+        self.assertIn("mine.txt", after)
+        self.assertLess(len(after), len(before) + 1)  # the figures of the complete file are gone
+        with open(os.path.join(out, "index.html"), encoding="utf-8") as page_file:
+            shown = set(re.findall(r'<img src="figures/([^"]+)"', page_file.read()))
+        self.assertEqual(after - {"mine.txt"}, shown)
         self.assertNothingLeftBehind()
 
 

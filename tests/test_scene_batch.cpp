@@ -124,11 +124,21 @@ TEST(ResultBytes, ASceneRecordComesBackBitForBit) {
   a.cells.resize(1, 3);
   a.cells << 0, 1, 2;
   a.u = a.nodes * 1e-3;
+  // The self-description of results layout 2 (issue 15) travels too.
+  a.body_names = {"bar", "layer"};
+  a.cell_body = {1};
+  a.cell_stress.resize(1, 3);
+  a.cell_stress << -10, 5.25, 1e-300;
+  a.residual_per_body = {3e-11, 7e-12};
+  a.residual_per_interface = {1e-12};
+  a.interface_names = {"S+"};
   InterfaceFields f;
   f.name = "S+";
   f.x = a.nodes;
   f.jump_N = Eigen::VectorXd::LinSpaced(3, -1, 1);
   f.status = {0, 1, 2};
+  f.node_plus = {0, 1, 2};
+  f.node_minus = {-1, -1, -1};
   a.interfaces = {f};
   a.reactions["D"] = Eigen::Vector2d(1.5, -2.25);
   a.combined_status = {2, 2, 0};
@@ -148,15 +158,45 @@ TEST(ResultBytes, ASceneRecordComesBackBitForBit) {
   EXPECT_EQ(b.nodes, a.nodes);
   EXPECT_EQ(b.cells, a.cells);
   EXPECT_EQ(b.u, a.u);
+  EXPECT_EQ(b.body_names, a.body_names);
+  EXPECT_EQ(b.cell_body, a.cell_body);
+  EXPECT_EQ(b.cell_stress, a.cell_stress);
+  EXPECT_EQ(b.residual_per_body, a.residual_per_body);
+  EXPECT_EQ(b.residual_per_interface, a.residual_per_interface);
+  EXPECT_EQ(b.interface_names, a.interface_names);
   ASSERT_EQ(b.interfaces.size(), 1u);
   EXPECT_EQ(b.interfaces[0].name, "S+");
   EXPECT_EQ(b.interfaces[0].jump_N, f.jump_N);
   EXPECT_EQ(b.interfaces[0].status, f.status);
+  EXPECT_EQ(b.interfaces[0].node_plus, f.node_plus);
+  EXPECT_EQ(b.interfaces[0].node_minus, f.node_minus);
   EXPECT_EQ(b.reactions.at("D"), a.reactions.at("D"));
   EXPECT_EQ(b.combined_status, a.combined_status);
   // Reading more than was written is an error, not garbage.
   int extra = 0;
   EXPECT_THROW(get(r, extra), std::runtime_error);
+}
+
+TEST(ResultBytes, ASolveReportKeepsItsResidualBodyByBody) {
+  SolveReport a;
+  a.solver = "fast";
+  a.u = Eigen::VectorXd::LinSpaced(4, 0, 1);
+  a.residual.interface = 2e-11;
+  a.residual.bulk = 4e-11;
+  a.residual.per_interface = {2e-11, 1e-13};
+  a.residual.per_body = {4e-11, 3e-12, 5e-13};
+  a.stop_cause = StopCause::Converged;
+  ByteWriter w;
+  put(w, a);
+  const std::string bytes = w.take();
+  ByteReader r(bytes);
+  SolveReport b;
+  get(r, b);
+  EXPECT_TRUE(r.done());
+  EXPECT_EQ(b.u, a.u);
+  EXPECT_EQ(b.residual.per_interface, a.residual.per_interface);
+  EXPECT_EQ(b.residual.per_body, a.residual.per_body);
+  EXPECT_EQ(b.stop_cause, a.stop_cause);
 }
 
 }  // namespace

@@ -93,7 +93,9 @@ LinearSystem::LinearSystem(const Model& model)
       if (owner_[dof].empty()) {
         free_index_[dof] = num_free++;
         floating_free_.push_back(model.bodies[b].floating);
+        body_free_.push_back(b);
       }
+  for (const Body& body : model.bodies) body_names_.push_back(body.name);
 
   Triplets ff;
   F_f_ = Eigen::VectorXd::Zero(num_free);

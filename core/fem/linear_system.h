@@ -28,6 +28,11 @@ class LinearSystem {
   double prescribed_value(int global_dof) const { return prescribed_[global_dof]; }
   // Whether a free DOF belongs to a floating body (Body::floating).
   bool floating(int free_dof) const { return floating_free_[free_dof]; }
+  // The body (index into Model::bodies) that owns a free DOF, and the bodies' names: the
+  // residual is judged body by body (SPEC §1.5).
+  int body_of(int free_dof) const { return body_free_[free_dof]; }
+  int num_bodies() const { return static_cast<int>(body_names_.size()); }
+  const std::string& body_name(int body) const { return body_names_[body]; }
 
   // Full nodal displacement vector from the free unknowns (prescribed values filled in).
   Eigen::VectorXd expand(const Eigen::VectorXd& u_free) const;
@@ -46,6 +51,8 @@ class LinearSystem {
   std::vector<double> prescribed_;
   std::vector<std::string> owner_;  // name of the condition prescribing each DOF ("" if free)
   std::vector<bool> floating_free_;
+  std::vector<int> body_free_;
+  std::vector<std::string> body_names_;
   SparseMatrix K_ff_;
   Eigen::VectorXd F_f_;
 };

@@ -14,6 +14,7 @@
 #include <hdf5.h>
 
 #include "core/io/h5_common.h"
+#include "core/io/output_target.h"
 
 namespace thinlayer {
 namespace {
@@ -119,13 +120,6 @@ void write_attr(hid_t file, const std::string& object_path, const std::string& n
   check(H5Awrite(attr.get(), mem_type, value), "cannot write " + what);
 }
 
-// Unique per writer, so two writers for one target (in this process or another) never
-// share a temporary file.
-std::string temporary_name(const std::string& path) {
-  static std::atomic<unsigned> counter{0};
-  return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
-}
-
 hid_t create_file(const std::string& tmp_path, const std::string& file_name) {
   const std::string what = "cannot create HDF5 file for '" + file_name + "'";
   Handle access(check(H5Pcreate(H5P_FILE_ACCESS), what), H5Pclose);
@@ -141,26 +135,31 @@ void flush_to_disk(const std::string& tmp_path, const std::string& file_name) {
   const bool ok = fd >= 0 && ::fsync(fd) == 0;
   const int error = errno;
   if (fd >= 0) ::close(fd);
-  if (!ok) throw std::runtime_error("cannot write '" + file_name + "': " + std::strerror(error));
+  if (!ok) throw OutputError("cannot write '" + file_name + "': " + std::strerror(error));
 }
 
 }  // namespace
 
-H5Writer::H5Writer(const std::string& path) : path_(path), tmp_path_(temporary_name(path)) {
+H5Writer::H5Writer(const std::string& path)
+    : path_(path), target_(resolve_output_target(path)), tmp_path_(temporary_name_beside(target_)) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  std::error_code ec;
-  if (std::filesystem::is_directory(path_, ec))
-    throw std::runtime_error("cannot write '" + path_ + "': " + std::strerror(EISDIR));
   // Creating the file ourselves first gets the system's reason (missing directory, no
   // permission) for the message; HDF5 would bury it in its error stack.
-  const int fd = ::open(tmp_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) throw std::runtime_error("cannot write '" + path_ + "': " + std::strerror(errno));
+  register_temporary(tmp_path_);
+  const int fd = ::open(tmp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    const int error = errno;
+    unregister_temporary(tmp_path_);
+    throw OutputError("cannot write '" + path_ + "': " + std::strerror(error));
+  }
   ::close(fd);
   try {
     file_ = create_file(tmp_path_, path_);
-  } catch (...) {
+  } catch (const std::exception& e) {
+    std::error_code ec;
     std::filesystem::remove(tmp_path_, ec);
-    throw;
+    unregister_temporary(tmp_path_);
+    throw OutputError(e.what());
   }
 }
 
@@ -168,6 +167,7 @@ H5Writer::~H5Writer() {
   if (file_ >= 0) H5Fclose(file_);
   std::error_code ec;
   if (!committed_) std::filesystem::remove(tmp_path_, ec);
+  unregister_temporary(tmp_path_);
 }
 
 void H5Writer::commit() {
@@ -176,8 +176,9 @@ void H5Writer::commit() {
   check(H5Fclose(file_id), "cannot close '" + path_ + "'");
   flush_to_disk(tmp_path_, path_);
   std::error_code ec;
-  std::filesystem::rename(tmp_path_, path_, ec);
-  if (ec) throw std::runtime_error("cannot write '" + path_ + "': " + ec.message());
+  // Onto the end of any chain of symbolic links: the links stay, the file they name is replaced.
+  std::filesystem::rename(tmp_path_, target_, ec);
+  if (ec) throw OutputError("cannot write '" + path_ + "': " + ec.message());
   committed_ = true;
 }
 

@@ -1,10 +1,13 @@
 #pragma once
 // Writes one HDF5 result file, all or nothing.
 //
-// The data go to a temporary file next to the target (`<path>.tmp.<pid>.<n>`); commit()
+// The data go to a temporary file next to the target (`<target>.tmp.<pid>.<n>`); commit()
 // closes it and renames it onto the target, which is atomic on POSIX file systems. A writer
 // destroyed without commit() (for instance while an exception unwinds) deletes the temporary
-// file, so a reader never sees a half-written result.
+// file, so a reader never sees a half-written result; so does SIGINT/SIGTERM once
+// install_signal_cleanup() is set (core/io/output_target.h). A symbolic link at the path is
+// followed (its target is replaced, the link stays); a path that is a directory, a FIFO or a
+// device is refused.
 //
 // Object paths are absolute or relative to the root ("/" is the root, "a/b" means "/a/b").
 // Missing parent groups are created. Writing an object or attribute that already exists
@@ -14,7 +17,7 @@
 // strings as variable-length UTF-8 (h5py returns attributes as `str`; string datasets as
 // `bytes` unless read through `.asstr()`). NaN and Inf are written as given.
 //
-// Every failure throws std::runtime_error naming the file and the object. HDF5's own error
+// Every failure throws std::runtime_error (OutputError when opening or committing) naming the file and the object. HDF5's own error
 // printing is turned off for the constructing thread (HDF5 keeps that setting per thread).
 #include <concepts>
 #include <cstddef>
@@ -34,7 +37,8 @@ class H5Writer {
   using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   using RowMatrixXi = Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-  // Throws, creating nothing, if the target's directory is missing or not writable.
+  // Throws OutputError, creating nothing, if the target's directory is missing or not
+  // writable, or the target is not a regular file.
   explicit H5Writer(const std::string& path);
   ~H5Writer();
   H5Writer(const H5Writer&) = delete;
@@ -43,8 +47,6 @@ class H5Writer {
   // Closes the file and moves it onto the target path. No other call is allowed afterwards.
   void commit();
   const std::string& path() const { return path_; }
-  // Where the data go until commit(): for a signal handler that must remove it (SPEC §4).
-  const std::string& temporary_path() const { return tmp_path_; }
 
   void group(const std::string& path);
 
@@ -76,6 +78,7 @@ class H5Writer {
   std::int64_t file() const;  // the open file's id; throws after commit()
 
   std::string path_;
+  std::string target_;  // path_ with its symbolic links followed
   std::string tmp_path_;
   std::int64_t file_ = -1;  // hid_t, kept as its underlying type so <hdf5.h> stays private
   bool committed_ = false;

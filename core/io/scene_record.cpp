@@ -4,6 +4,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/io/cell_stress.h"
+#include "core/io/units.h"
+
 namespace thinlayer {
 
 StatusCount InterfaceFields::counts() const {
@@ -59,7 +62,11 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   s.nodes.resize(num_nodes, 2);
   s.cells = H5Writer::RowMatrixXi::Constant(num_cells, per_cell, -1);  // -1 pads a mixed mesh
   int node_offset = 0, cell = 0;
+  std::vector<int> body_offset;
   for (const Body& b : model.bodies) {
+    s.body_names.push_back(b.name);
+    s.cell_body.insert(s.cell_body.end(), b.mesh.num_cells(), static_cast<int>(body_offset.size()));
+    body_offset.push_back(node_offset);
     s.nodes.middleRows(node_offset, b.mesh.num_nodes()) = b.mesh.nodes;
     for (const auto& q : b.mesh.quads) {
       for (int a = 0; a < 4; ++a) s.cells(cell, a) = node_offset + q[a];
@@ -73,7 +80,13 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   }
   const Eigen::VectorXd u_full = problem.system().expand(report.u);
   s.u = Eigen::Map<const H5Writer::RowMatrixXd>(u_full.data(), num_nodes, 2);
+  s.cell_stress = cell_stresses(model, u_full);
   s.interfaces = interface_fields(problem, report, status_tolerance);
+  for (size_t i = 0; i < s.interfaces.size(); ++i)
+    for (const InterfaceNode& node : problem.interfaces()[i].nodes) {
+      s.interfaces[i].node_plus.push_back(body_offset[node.plus_body] + node.plus_node);
+      s.interfaces[i].node_minus.push_back(node.on_foundation() ? -1 : body_offset[node.minus_body] + node.minus_node);
+    }
   const Eigen::VectorXd interface_force = problem.B().transpose() * report.r;
   s.reactions = problem.system().reactions(u_full, problem.system().scatter(interface_force));
   s.text["solver"] = report.solver;
@@ -85,6 +98,10 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   s.numbers["residual"] = report.residual.value();
   s.numbers["residual_interface"] = report.residual.interface;
   s.numbers["residual_bulk"] = report.residual.bulk;
+  // SPEC §1.5: each body's and each interface's residual, with their names.
+  s.residual_per_body = report.residual.per_body;
+  s.residual_per_interface = report.residual.per_interface;
+  for (const Interface& i : problem.interfaces()) s.interface_names.push_back(i.name);
   s.numbers["tolerance"] = report.tolerance;
   s.numbers["wall_time_s"] = report.wall_time_s;
   s.numbers["status_tolerance"] = status_tolerance;
@@ -110,6 +127,8 @@ void require_finite_results(const SceneRecord& scene) {
   for (const auto& [name, R] : scene.reactions) check("reaction " + name, R.data(), R.data() + 2);
   for (const char* name : {"residual", "residual_interface", "residual_bulk"})
     if (scene.numbers.count(name)) check(name, &scene.numbers.at(name), &scene.numbers.at(name) + 1);
+  check("residual_per_body", scene.residual_per_body.begin(), scene.residual_per_body.end());
+  check("residual_per_interface", scene.residual_per_interface.begin(), scene.residual_per_interface.end());
 }
 
 }  // namespace
@@ -127,14 +146,33 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
   const std::string g = "/scenes/" + scene.id;
   file.group(g);
   for (const auto& [name, value] : scene.text) file.attr(g, name, value);
-  for (const auto& [name, value] : scene.numbers) file.attr(g, name, value);
+  for (const auto& [name, value] : scene.numbers) {
+    file.attr(g, name, value);
+    if (const std::string unit = unit_of(name); !unit.empty()) file.attr(g, name + "_units", unit);
+  }
   for (const auto& [name, value] : scene.integers) file.attr(g, name, value);
+  // A dataset with its unit, under the unit's name for it (units.h).
+  auto with_unit = [&](const std::string& path, const std::string& quantity) {
+    file.attr(path, "units", unit_of(quantity));
+  };
   file.dataset(g + "/mesh/nodes", scene.nodes);
+  with_unit(g + "/mesh/nodes", "nodes");
   file.dataset(g + "/mesh/cells", scene.cells);
+  file.attr(g + "/mesh/cells", "description", "node indices (rows of mesh/nodes) per cell, counter-clockwise; -1 pads");
+  if (!scene.cell_body.empty()) {  // a record made by record_scene (tests may build bare ones)
+    file.dataset(g + "/mesh/cell_body", scene.cell_body);
+    file.attr(g + "/mesh/cell_body", "description", "index of each cell's body in mesh/body_names");
+    file.dataset(g + "/mesh/body_names", scene.body_names);
+    file.dataset(g + "/mesh/cell_stress", scene.cell_stress);
+    with_unit(g + "/mesh/cell_stress", "cell_stress");
+    file.attr(g + "/mesh/cell_stress", "description", "sigma_11, sigma_22, sigma_12 at each cell's centre");
+  }
   file.dataset(g + "/u", scene.u);
+  with_unit(g + "/u", "u");
   for (const InterfaceFields& f : scene.interfaces) {
     const std::string p = g + "/interface/" + f.name;
     auto vec = [](const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
+    file.attr(p, "force_convention", force_convention);
     file.dataset(p + "/x", f.x);
     file.dataset(p + "/normal", f.normal);
     file.dataset(p + "/length", vec(f.length));
@@ -142,10 +180,39 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
     file.dataset(p + "/jump_T", vec(f.jump_T));
     file.dataset(p + "/sigma_N", vec(f.sigma_N));
     file.dataset(p + "/sigma_T", vec(f.sigma_T));
+    for (const char* q : {"x", "normal", "length", "jump_N", "jump_T", "sigma_N", "sigma_T"}) with_unit(p + "/" + q, q);
     file.dataset(p + "/status", f.status);
+    file.attr(p + "/status", "legend", status_legend);
+    if (!f.node_plus.empty()) {
+      file.dataset(p + "/node_plus", f.node_plus);
+      file.attr(p + "/node_plus", "description", "row of mesh/nodes of each interface node on the plus side");
+      file.dataset(p + "/node_minus", f.node_minus);
+      file.attr(p + "/node_minus", "description",
+                "row of mesh/nodes of each interface node on the minus side; -1: the rigid foundation");
+    }
   }
-  for (const auto& [name, R] : scene.reactions) file.dataset(g + "/reactions/" + name, std::vector<double>{R.x(), R.y()});
-  if (!scene.combined_status.empty()) file.dataset(g + "/combined_status", scene.combined_status);
+  for (const auto& [name, R] : scene.reactions) {
+    file.dataset(g + "/reactions/" + name, std::vector<double>{R.x(), R.y()});
+    with_unit(g + "/reactions/" + name, "reactions");
+    file.attr(g + "/reactions/" + name, "description", "[R_x, R_y], the force the boundary exerts on the body");
+  }
+  if (!scene.combined_status.empty()) {
+    file.dataset(g + "/combined_status", scene.combined_status);
+    file.attr(g + "/combined_status", "legend", status_legend);
+  }
+  auto joined = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ",") + n;
+    return out;
+  };
+  if (!scene.residual_per_body.empty()) {
+    file.dataset(g + "/residual_per_body", scene.residual_per_body);
+    file.attr(g + "/residual_per_body", "bodies", joined(scene.body_names));
+  }
+  if (!scene.residual_per_interface.empty()) {
+    file.dataset(g + "/residual_per_interface", scene.residual_per_interface);
+    file.attr(g + "/residual_per_interface", "interfaces", joined(scene.interface_names));
+  }
 }
 
 }  // namespace thinlayer

@@ -21,6 +21,9 @@ struct InterfaceFields {
   Eigen::VectorXd jump_N, jump_T;                   // mm
   Eigen::VectorXd sigma_N, sigma_T;                 // daN/mm²
   std::vector<int> status;                          // 0 gap, 1 slide, 2 stick
+  // Mesh node index (row of SceneRecord::nodes) of each interface node on its plus and minus
+  // side; -1 on the minus side for the rigid foundation. Filled by record_scene.
+  std::vector<int> node_plus, node_minus;
   StatusCount counts() const;
 };
 
@@ -32,10 +35,16 @@ struct SceneRecord {
   H5Writer::RowMatrixXd nodes;                    // N×2, all bodies, mm
   H5Writer::RowMatrixXi cells;                    // 4 (Q1) or 3 (P1) node indices per cell
   H5Writer::RowMatrixXd u;                        // N×2, mm
+  std::vector<std::string> body_names;            // the model's bodies, in order
+  std::vector<int> cell_body;                     // per cell: its body's index in body_names
+  H5Writer::RowMatrixXd cell_stress;              // per cell: σ11, σ22, σ12 at its centre, daN/mm²
   std::vector<InterfaceFields> interfaces;
   std::map<std::string, Eigen::Vector2d> reactions;  // daN per unit thickness
   // Layer mode: the status of each point of S through both faces (empty in limit mode).
   std::vector<int> combined_status;
+  // SPEC §1.5: the residual of each body and each interface (dimensionless), with their names.
+  std::vector<double> residual_per_body, residual_per_interface;
+  std::vector<std::string> interface_names;  // (the bodies: body_names above)
 };
 
 // Interface fields of a solution: jumps g = B u + g_D, stresses σ = r / ℓ, statuses with the
@@ -54,6 +63,9 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
 // "friction_path" = "f1,f2,...,f". Nothing when the path is empty.
 void record_friction_path(SceneRecord& scene, const std::vector<double>& multipliers, double friction);
 
+// /scenes/<id>: every attribute and dataset above, each numeric one with a unit (units.h)
+// as a `units` attribute on a dataset and a `<name>_units` attribute beside an attribute;
+// the status legend on every status dataset; the force sign convention on each interface.
 void write_scene(H5Writer& file, const SceneRecord& scene);
 
 }  // namespace thinlayer

@@ -12,6 +12,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "core/io/output_target.h"
+
 namespace thinlayer {
 namespace {
 
@@ -26,7 +28,7 @@ constexpr int vtk_quad = 9;
 }
 
 [[noreturn]] void cannot_write(const std::string& path, int error) {
-  throw std::runtime_error("cannot write VTU file '" + path + "': " + std::strerror(error));
+  throw OutputError("cannot write VTU file '" + path + "': " + std::strerror(error));
 }
 
 // Shortest text that reads back as the same double, whatever the locale.
@@ -191,6 +193,24 @@ std::string point_data(const SceneRecord& scene, const std::string& path) {
   return xml + combined_status_array(scene, path) + "</PointData>\n";
 }
 
+// Per cell: "body" (its name is the FieldData string "body_name_<body>") and "stress"
+// (σ11, σ22, σ12 at the cell's centre, daN/mm²). Nothing for a record without them.
+std::string cell_data(const SceneRecord& scene, const std::string& path) {
+  if (scene.cell_body.empty()) return "";
+  const auto cells = static_cast<std::size_t>(scene.cells.rows());
+  if (scene.cell_body.size() != cells || static_cast<std::size_t>(scene.cell_stress.rows()) != cells ||
+      scene.cell_stress.cols() != 3)
+    bad_scene(path, "cell_body and cell_stress must have one row per cell");
+  std::string body, stress;
+  for (std::size_t c = 0; c < cells; ++c) {
+    body += std::to_string(scene.cell_body[c]) + "\n";
+    const std::string at = "stress of cell " + std::to_string(c);
+    for (int k = 0; k < 3; ++k) stress += finite_text(scene.cell_stress(c, k), path, at) + (k < 2 ? " " : "\n");
+  }
+  return "<CellData>\n" + data_array("Int32", "body", 1, body) + data_array("Float64", "stress", 3, stress) +
+         "</CellData>\n";
+}
+
 std::string field_data(const SceneRecord& scene, const std::string& path) {
   std::string xml = "<FieldData>\n" + data_array("String", "scene_id", 1, vtk_string(scene.id), 1);
   for (const auto& [name, value] : scene.text) xml += data_array("String", name, 1, vtk_string(value), 1);
@@ -200,6 +220,8 @@ std::string field_data(const SceneRecord& scene, const std::string& path) {
                              : data_array("Float64", name, 1, text_of(value), 1);
   }
   for (const auto& [name, value] : scene.integers) xml += data_array("Int64", name, 1, std::to_string(value), 1);
+  for (std::size_t b = 0; b < scene.body_names.size(); ++b)
+    xml += data_array("String", "body_name_" + std::to_string(b), 1, vtk_string(scene.body_names[b]), 1);
   for (const auto& [name, r] : scene.reactions) {
     const std::string what = "reaction_" + name;
     xml += data_array("Float64", what, 2, finite_text(r.x(), path, what) + " " + finite_text(r.y(), path, what), 1);
@@ -216,60 +238,20 @@ std::string vtu_text(const SceneRecord& scene, const std::string& path) {
          "<UnstructuredGrid>\n" +
          field_data(scene, path) + "<Piece NumberOfPoints=\"" + std::to_string(scene.nodes.rows()) +
          "\" NumberOfCells=\"" + std::to_string(scene.cells.rows()) + "\">\n" + point_data(scene, path) +
-         points(scene, path) + cells(scene, path) + "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-}
-
-// Unique per call, so two writers for one target (in this process or another) never share it.
-std::string temporary_name(const std::string& path) {
-  static std::atomic<unsigned> counter{0};
-  return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
-}
-
-// Creates the temporary file next to `path`; the system's reason if it cannot.
-int create_temporary(const std::string& path, const std::string& tmp) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) cannot_write(path, EISDIR);
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) cannot_write(path, errno);
-  return fd;
-}
-
-// Writes all of `text`, flushes it to disk (without which a crash soon after the rename can
-// leave an empty target) and closes; returns 0 or the errno of the first failure.
-int write_all(int fd, const std::string& text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const int error = errno;
-      ::close(fd);
-      return error;
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  const int error = ::fsync(fd) == 0 ? 0 : errno;
-  if (::close(fd) != 0 && error == 0) return errno;
-  return error;
+         cell_data(scene, path) + points(scene, path) + cells(scene, path) + "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 }
 
 }  // namespace
 
 void write_vtu(const std::string& path, const SceneRecord& scene) {
-  const std::string text = vtu_text(scene, path);
-  const std::string tmp = temporary_name(path);
-  const int fd = create_temporary(path, tmp);
-  int error = write_all(fd, text);
-  if (error == 0 && std::rename(tmp.c_str(), path.c_str()) != 0) error = errno;
-  if (error != 0) {
-    ::unlink(tmp.c_str());
-    cannot_write(path, error);
-  }
+  write_text_atomically(path, vtu_text(scene, path));
 }
 
 void check_vtu_target(const std::string& path) {
-  const std::string tmp = temporary_name(path);
-  ::close(create_temporary(path, tmp));
+  const std::string tmp = temporary_name_beside(resolve_output_target(path));
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) cannot_write(path, errno);
+  ::close(fd);
   ::unlink(tmp.c_str());
 }
 

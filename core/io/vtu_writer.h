@@ -12,6 +12,8 @@
 //               "<name>_normal" (3 components), "<name>_status" (0 gap, 1 slide, 2 stick,
 //               -1 off the interface); in layer mode also "combined_status" on the points of
 //               the first interface (S+), -1 elsewhere;
+//   CellData    "body" (the cell's body: its name is the FieldData "body_name_<body>") and
+//               "stress" (σ11, σ22, σ12 at the cell's centre, 3 components, daN/mm²);
 //   FieldData   the scene's attributes, one tuple each: "scene_id" and the text attributes
 //               as String arrays, numbers as Float64, integers as Int64, and each reaction
 //               as "reaction_<boundary>" (2 components, [R_x, R_y]).
@@ -28,7 +30,9 @@
 // infinite point, displacement or interface value, is an error: nothing is written.
 //
 // All or nothing: the text goes to a temporary file next to the target, which is renamed
-// onto it; on any error the temporary file is removed and the target left as it was.
+// onto it; on any error the temporary file is removed and the target left as it was
+// (write_text_atomically, core/io/output_target.h: through symbolic links, never onto a
+// directory, FIFO or device).
 #include <string>
 
 #include "core/io/scene_record.h"
@@ -39,7 +43,7 @@ namespace thinlayer {
 // node indices, an interface point on no node) or holds a NaN, or if the file cannot be written.
 void write_vtu(const std::string& path, const SceneRecord& scene);
 
-// Throws std::runtime_error naming the path if a file cannot be created there (the path is a
+// Throws OutputError naming the path if a file cannot be created there (the path is a
 // directory, its directory is missing or not writable). Leaves nothing behind. Lets a caller
 // reject an unwritable target before a long solve.
 void check_vtu_target(const std::string& path);

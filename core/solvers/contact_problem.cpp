@@ -78,14 +78,33 @@ Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, c
 Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& u_free,
                           const Eigen::VectorXd& r) {
   const LinearSystem& system = problem.system();
+  const double floor = residual_load_floor * system.F().norm();
+  auto relative = [floor](double norm2, double scale2) {
+    const double scale = std::max(std::sqrt(scale2), floor);
+    return scale > 0 ? std::sqrt(norm2) / scale : std::sqrt(norm2);
+  };
+  Residual res;
+
+  // Bulk, body by body: the imbalance and the forces on each body's own DOFs.
   const Eigen::VectorXd interface_force = problem.B().transpose() * r;
   const Eigen::VectorXd imbalance = system.K() * u_free - system.F() - interface_force;
-  Residual res;
-  const double bulk_scale = std::max(system.F().norm(), interface_force.norm());
-  res.bulk = imbalance.norm() / (bulk_scale > 0 ? bulk_scale : 1.0);
+  const int bodies = system.num_bodies();
+  std::vector<double> imbalance2(bodies, 0.0), load2(bodies, 0.0), contact2(bodies, 0.0);
+  for (int i = 0; i < system.num_free(); ++i) {
+    const int b = system.body_of(i);
+    imbalance2[b] += imbalance[i] * imbalance[i];
+    load2[b] += system.F()[i] * system.F()[i];
+    contact2[b] += interface_force[i] * interface_force[i];
+  }
+  for (int b = 0; b < bodies; ++b) {
+    res.per_body.push_back(relative(imbalance2[b], std::max(load2[b], contact2[b])));
+    res.bulk = std::max(res.bulk, res.per_body.back());
+  }
 
+  // Interfaces, one by one: the natural map against the forces that interface carries.
   const Eigen::VectorXd g = problem.jumps(u_free);
-  double map_norm2 = 0;
+  const int interfaces = static_cast<int>(problem.interfaces().size());
+  std::vector<double> map2(interfaces, 0.0), force2(interfaces, 0.0);
   for (int k = 0; k < problem.num_nodes(); ++k) {
     Eigen::Vector2d d;
     for (int row = 0; row < 2; ++row) {
@@ -93,10 +112,13 @@ Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& 
       d[row] = g[2 * k + row] + (std::isfinite(c) ? c * r[2 * k + row] : 0.0);
     }
     const Eigen::Vector2d R = natural_map(problem.law(k), r.segment<2>(2 * k), d, problem.kappa().segment<2>(2 * k));
-    map_norm2 += R.squaredNorm();
+    map2[problem.interface_of(k)] += R.squaredNorm();
+    force2[problem.interface_of(k)] += r.segment<2>(2 * k).squaredNorm();
   }
-  const double interface_scale = r.norm() > 0 ? r.norm() : system.F().norm();
-  res.interface = std::sqrt(map_norm2) / (interface_scale > 0 ? interface_scale : 1.0);
+  for (int i = 0; i < interfaces; ++i) {
+    res.per_interface.push_back(relative(map2[i], force2[i]));
+    res.interface = std::max(res.interface, res.per_interface.back());
+  }
   return res;
 }
 

@@ -48,6 +48,17 @@ struct SolverOptions {
   // Fast solver only. α of the proximal steps taken when a floating body is present, relative
   // to the diagonal of its condensed stiffness (see fast_solver.cpp).
   double proximal_weight = 1e-2;
+  // Fast solver, floating layer only. Which path: the layer's dual operator
+  // (floating_layer.h) and, if it stops short of the tolerance, the proximal path
+  // (proximal_layer.h); or one of them alone (to compare selections, or measure each).
+  enum class LayerPath { DualThenProximal, Dual, Proximal };
+  LayerPath layer_path = LayerPath::DualThenProximal;
+  // The dual path: the floor of the layer's condensed face-stiffness eigenvalues relative to the
+  // largest (the selection spring on its soft modes; 1e-12 is about where S's round-off lies),
+  // the active-set steps per anchor, and κ relative to 1 / W̃_ii.
+  double layer_floor = 1e-12;
+  int layer_newton_cap = 300;
+  double layer_kappa_scale = 1;
   // Fast solver only: the complementarity parameter of the active-set guess, relative to the
   // nodal stiffness. It changes the path, never the answer (judged on the SPEC residual). On
   // the bar's layer mode (6 rows × ε = 1e-2, 1e-3, 1e-4) 1 converged in 14 of 18 scenes, 0.1 in

@@ -1,0 +1,114 @@
+#include "core/io/output_target.h"
+
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace thinlayer {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void refuse(const std::string& path, const std::string& why) {
+  throw OutputError("cannot write '" + path + "': " + why);
+}
+
+// What a non-regular file is, for the message.
+std::string kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return std::strerror(EISDIR);
+  if (S_ISFIFO(mode)) return "it is a FIFO, not a regular file";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "it is a device, not a regular file";
+  if (S_ISSOCK(mode)) return "it is a socket, not a regular file";
+  return "it is not a regular file";
+}
+
+// Fixed-size storage the signal handler can read without allocating or locking.
+constexpr int max_temporaries = 64;
+constexpr int max_path = 4096;
+std::array<char[max_path], max_temporaries> temporaries{};
+std::array<std::atomic<bool>, max_temporaries> in_use{};
+std::atomic<int> signal_child{0};
+
+extern "C" void remove_temporaries_and_die(int signal) {
+  if (const int child = signal_child.load(); child > 0) ::kill(child, signal);
+  for (int i = 0; i < max_temporaries; ++i)
+    if (in_use[i].load()) ::unlink(temporaries[i]);
+  ::signal(signal, SIG_DFL);
+  ::raise(signal);
+}
+
+}  // namespace
+
+std::string resolve_output_target(const std::string& path) {
+  fs::path target = path;
+  struct stat info {};
+  for (int links = 0; ::lstat(target.c_str(), &info) == 0 && S_ISLNK(info.st_mode); ++links) {
+    if (links == 40) refuse(path, "too many levels of symbolic links");
+    const fs::path next = fs::read_symlink(target);
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
+  if (::stat(target.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) refuse(path, kind_of(info.st_mode));
+  return target.string();
+}
+
+std::string temporary_name_beside(const std::string& target) {
+  static std::atomic<unsigned> counter{0};
+  return target + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+}
+
+void register_temporary(const std::string& path) {
+  if (path.size() >= max_path) throw std::runtime_error("temporary path too long: " + path);
+  for (int i = 0; i < max_temporaries; ++i) {
+    if (in_use[i].load()) continue;
+    std::strncpy(temporaries[i], path.c_str(), max_path - 1);
+    in_use[i].store(true);
+    return;
+  }
+  throw std::runtime_error("too many temporary files open at once");
+}
+
+void unregister_temporary(const std::string& path) {
+  for (int i = 0; i < max_temporaries; ++i)
+    if (in_use[i].load() && path == temporaries[i]) {
+      in_use[i].store(false);
+      return;
+    }
+}
+
+void install_signal_cleanup() {
+  struct sigaction action {};
+  action.sa_handler = remove_temporaries_and_die;
+  sigemptyset(&action.sa_mask);
+  for (int s : {SIGINT, SIGTERM}) ::sigaction(s, &action, nullptr);
+}
+
+void set_signal_child(int pid) { signal_child.store(pid); }
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+  const std::string target = resolve_output_target(path);
+  const std::string tmp = temporary_name_beside(target);
+  register_temporary(tmp);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  int error = fd < 0 ? errno : 0;
+  for (std::size_t done = 0; error == 0 && done < text.size();) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno != EINTR) error = errno;
+    if (n > 0) done += static_cast<std::size_t>(n);
+  }
+  // Without the fsync a crash soon after the rename can leave an empty target.
+  if (error == 0 && ::fsync(fd) != 0) error = errno;
+  if (fd >= 0 && ::close(fd) != 0 && error == 0) error = errno;
+  if (error == 0 && std::rename(tmp.c_str(), target.c_str()) != 0) error = errno;
+  if (error != 0 && fd >= 0) ::unlink(tmp.c_str());
+  unregister_temporary(tmp);
+  if (error != 0) refuse(path, std::strerror(error));
+}
+
+}  // namespace thinlayer

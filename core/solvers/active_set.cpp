@@ -1,0 +1,233 @@
+#include "core/solvers/active_set.h"
+
+#include <cmath>
+#include <set>
+
+#include <Eigen/Dense>
+
+namespace thinlayer {
+
+
+
+
+Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, double complementarity_scale,
+                   bool skip_frictionless_rows) {
+  const int m = problem.num_nodes();
+  Condensed c{ci.W(), ci.g0(), ci.B_L(), ci.S(), ci.f_L(), Eigen::VectorXd::Zero(2 * m), {}, {}, {}};
+  for (int k = 0; k < m; ++k) {
+    const InterfaceLaw& law = problem.law(k);
+    c.normal.push_back(law.normal_active());
+    // Without the skip, a frictionless node keeps its tangential row as a slide with r_T = 0.
+    c.tangential.push_back(law.normal_active() && (law.tangential_active() || !skip_frictionless_rows));
+    c.friction.push_back(law.tangential_active() ? law.friction : 0.0);
+    for (int row = 0; row < 2; ++row) {
+      const double C = problem.compliance()[2 * k + row];
+      if (std::isfinite(C)) c.W(2 * k + row, 2 * k + row) += C;
+      // The complementarity parameter of the Newton method: the nodal stiffness of both sides
+      // (not 1/diag(W + C), which is zero on a face of a floating body), scaled down so that
+      // the statuses follow the forces more than the jumps (see SolverOptions).
+      c.kappa[2 * k + row] = complementarity_scale * problem.kappa()[2 * k + row];
+    }
+  }
+  return c;
+}
+
+// The active-set guess from the current iterate: the sign pattern of the natural map.
+std::vector<Active> guess_statuses(const Condensed& c, const Eigen::VectorXd& r, const Eigen::VectorXd& d) {
+  const int m = static_cast<int>(c.normal.size());
+  std::vector<Active> s(m);
+  for (int k = 0; k < m; ++k) {
+    const double predicted_pressure = -r[2 * k] + c.kappa[2 * k] * d[2 * k];
+    if (!c.normal[k] || predicted_pressure <= 0) {
+      s[k] = Active::Gap;
+    } else if (!c.tangential[k]) {
+      s[k] = Active::Frictionless;
+    } else {
+      const double z = r[2 * k + 1] - c.kappa[2 * k + 1] * d[2 * k + 1];
+      const double threshold = c.friction[k] * predicted_pressure;
+      s[k] = std::abs(z) < threshold ? Active::Stick : (z > 0 ? Active::SlidePositive : Active::SlideNegative);
+    }
+  }
+  return s;
+}
+
+// Solves A x = b for a matrix that mixes compliances (mm/daN), stiffnesses (daN/mm) and
+// plain coefficients, whose scales can differ by 1e15 in the layer mode: equilibrate rows and
+// columns (a few Ruiz sweeps), factor once, then refine the solution against the original A.
+Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* rcond) {
+  const Eigen::Index n = A.rows();
+  Eigen::VectorXd row = Eigen::VectorXd::Ones(n), col = Eigen::VectorXd::Ones(n);
+  Eigen::MatrixXd M = A;
+  for (int sweep = 0; sweep < 5; ++sweep) {
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double r = M.row(i).cwiseAbs().maxCoeff(), c = M.col(i).cwiseAbs().maxCoeff();
+      if (r > 0) row[i] /= std::sqrt(r);
+      if (c > 0) col[i] /= std::sqrt(c);
+    }
+    M = row.asDiagonal() * A * col.asDiagonal();
+  }
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
+  if (rcond) *rcond = lu.rcond();
+  Eigen::VectorXd x = col.asDiagonal() * lu.solve(row.asDiagonal() * b);
+  for (int refinement = 0; refinement < 3; ++refinement)
+    x += col.asDiagonal() * lu.solve(row.asDiagonal() * (b - A * x));
+  return x;
+}
+
+int floating_unknowns(const Condensed& c) { return static_cast<int>(c.S.rows()); }
+
+// d = g₀ + (W + C) r + B_L w.
+Eigen::VectorXd jump_part(const Condensed& c, const Eigen::VectorXd& r, const Eigen::VectorXd& w) {
+  Eigen::VectorXd d = c.g0 + c.W * r;
+  if (floating_unknowns(c)) d += c.B_L * w;
+  return d;
+}
+
+
+Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
+  // The statuses fix part of r outright: r = 0 at a gap, r_T = ±f|r_N| on a slide, r_T = 0
+  // without friction. The remaining unknowns are r_N at every contact, r_T at every stick,
+  // and w: r = Q x_r, where column j of Q is unit at its row, plus the slide coupling.
+  const int m2 = static_cast<int>(c.g0.size()), nw = floating_unknowns(c);
+  std::vector<int> rows;  // the equation (d_N = 0 or d_T = 0) that goes with each unknown
+  std::vector<std::pair<int, double>> coupling;  // for an r_N column: the T row it drives, and how
+  for (int k = 0; k < static_cast<int>(s.size()); ++k) {
+    if (s[k] == Active::Gap) continue;
+    rows.push_back(2 * k);
+    const bool slide = s[k] == Active::SlidePositive || s[k] == Active::SlideNegative;
+    // SlidePositive: r_T = +f p = -f r_N; SlideNegative: r_T = -f p = +f r_N.
+    coupling.push_back({slide ? 2 * k + 1 : -1,
+                        s[k] == Active::SlidePositive ? -c.friction[k] : c.friction[k]});
+    if (s[k] == Active::Stick) {
+      rows.push_back(2 * k + 1);
+      coupling.push_back({-1, 0.0});
+    }
+  }
+  const int nr = static_cast<int>(rows.size()), n = nr + nw;
+  // Column j of M Q is column rows[j] of M, plus the slide coupling times its T column.
+  auto times_Q = [&](const auto& M, int j) {
+    Eigen::VectorXd col = M.col(rows[j]);
+    if (coupling[j].first >= 0) col += coupling[j].second * M.col(coupling[j].first);
+    return col;
+  };
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  for (int j = 0; j < nr; ++j) {  // d = 0 on the active rows: W Q x_r + B_L w = -g0
+    const Eigen::VectorXd WQ_j = times_Q(c.W, j);
+    for (int i = 0; i < nr; ++i) A(i, j) = WQ_j[rows[i]];
+  }
+  for (int i = 0; i < nr; ++i) {
+    if (nw) A.row(i).tail(nw) = c.B_L.row(rows[i]);
+    b[i] = -c.g0[rows[i]];
+  }
+  if (nw) {  // S w - B_Lᵀ Q x_r = f_L
+    for (int j = 0; j < nr; ++j) A.col(j).tail(nw) = -times_Q(c.B_L.transpose(), j);
+    A.bottomRightCorner(nw, nw) = c.S;
+    b.tail(nw) = c.f_L;
+  }
+  Step step;
+  Eigen::VectorXd x = n ? solve_equilibrated(A, b, &step.rcond) : Eigen::VectorXd();
+  // A floating body whose contacts are all open (or only slide) has rigid motions the step
+  // cannot fix: the system is singular. Then take the minimum-norm solution and say so.
+  const double scale = std::max(b.norm(), 1e-300);
+  if (n && (!x.allFinite() || (A * x - b).norm() > 1e-8 * scale)) {
+    x = A.completeOrthogonalDecomposition().solve(b);
+    step.singular = true;
+  }
+  step.r = Eigen::VectorXd::Zero(m2);
+  for (int j = 0; j < nr; ++j) {
+    step.r[rows[j]] += x[j];
+    if (coupling[j].first >= 0) step.r[coupling[j].first] += coupling[j].second * x[j];
+  }
+  step.w = x.tail(nw);
+  return step;
+}
+
+// Relative norm of the natural map on the condensed problem (same map as contact_residual).
+double condensed_residual(const Condensed& c, const ContactProblem& problem, const Eigen::VectorXd& r,
+                          const Eigen::VectorXd& d) {
+  double norm2 = 0;
+  for (int k = 0; k < problem.num_nodes(); ++k)
+    norm2 += natural_map(problem.law(k), r.segment<2>(2 * k), d.segment<2>(2 * k), c.kappa.segment<2>(2 * k))
+                 .squaredNorm();
+  const double scale = r.norm() > 0 ? r.norm() : 1.0;
+  return std::sqrt(norm2) / scale;
+}
+
+namespace {
+
+// Local law at one node with the others frozen: d = q + A r (A the node's 2×2 block).
+Eigen::Vector2d local_solve(const Condensed& c, int k, const Eigen::Vector2d& q, const Eigen::Matrix2d& A) {
+  if (!c.normal[k] || q[0] <= 0) return Eigen::Vector2d::Zero();  // gap
+  if (!c.tangential[k]) return {std::min(0.0, -q[0] / A(0, 0)), 0.0};
+  const double f = c.friction[k];
+  const Eigen::Vector2d stick = A.ldlt().solve(-q);
+  if (stick[0] <= 0 && std::abs(stick[1]) <= -f * stick[0]) return stick;
+  for (double s : {+1.0, -1.0}) {  // slide: r_T = s f p, d_N = 0, slip against r_T
+    const double denominator = A(0, 0) - s * f * A(0, 1);
+    if (!(denominator > 0)) continue;
+    const double rN = -q[0] / denominator;
+    const Eigen::Vector2d slide(rN, -s * f * rN);
+    const double dT = q[1] + A(1, 0) * slide[0] + A(1, 1) * slide[1];
+    if (rN <= 0 && s * dT <= 0) return slide;
+  }
+  return stick;  // no consistent branch (a non-associated corner case): keep the elastic one
+}
+
+}  // namespace
+
+void nsgs_sweeps(const Condensed& c, Eigen::VectorXd& r, int sweeps) {
+  const int m = static_cast<int>(c.normal.size());
+  for (int sweep = 0; sweep < sweeps; ++sweep)
+    for (int k = 0; k < m; ++k) {
+      const Eigen::Matrix2d A = c.W.block<2, 2>(2 * k, 2 * k);
+      const Eigen::Vector2d q = c.g0.segment<2>(2 * k) + c.W.middleRows<2>(2 * k) * r - A * r.segment<2>(2 * k);
+      r.segment<2>(2 * k) = local_solve(c, k, q, A);
+    }
+}
+
+
+// Semismooth Newton / primal-dual active set from the given statuses and iterate.
+ActiveSetRun active_set(const Condensed& c, const ContactProblem& problem, std::vector<Active>& statuses,
+                        Eigen::VectorXd& r, Eigen::VectorXd& w, int max_iterations) {
+  ActiveSetRun run;
+  std::set<std::vector<Active>> visited;
+  const bool damped = floating_unknowns(c) > 0;
+  for (run.iterations = 1; run.iterations <= max_iterations; ++run.iterations) {
+    const Step step = solve_statuses(c, statuses);
+    run.singular = step.singular;
+    run.rcond = step.rcond;
+    if (damped && run.iterations > 1) {
+      // Globalise the Newton step with a backtracking line search on the natural map.
+      const double merit0 = condensed_residual(c, problem, r, jump_part(c, r, w));
+      double t = 1;
+      for (; t > 1e-4; t *= 0.5) {
+        const Eigen::VectorXd rt = r + t * (step.r - r), wt = w + t * (step.w - w);
+        if (condensed_residual(c, problem, rt, jump_part(c, rt, wt)) < (1 - 1e-4 * t) * merit0) break;
+      }
+      r += t * (step.r - r);
+      w += t * (step.w - w);
+    } else {
+      r = step.r;
+      w = step.w;
+    }
+    std::vector<Active> next = guess_statuses(c, r, jump_part(c, r, w));
+    if (next == statuses) {  // a fixed point: re-solving the same statuses changes nothing
+      run.settled = true;
+      break;
+    }
+    // The active set cycles: let NSGS move the iterate (bodies with supports only).
+    if (!visited.insert(next).second && floating_unknowns(c) == 0) {
+      nsgs_sweeps(c, r, 20);
+      run.nsgs_sweeps += 20;
+      next = guess_statuses(c, r, jump_part(c, r, w));
+      visited.clear();
+    }
+    statuses = std::move(next);
+  }
+  run.iterations = std::min(run.iterations, max_iterations);
+  return run;
+}
+
+
+}  // namespace thinlayer

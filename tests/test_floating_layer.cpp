@@ -1,0 +1,106 @@
+// The floating-layer solver (issue 13) and the per-body residual (SPEC §1.5).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cases/dovetail/dovetail.h"
+#include "core/solvers/fast_solver.h"
+
+namespace thinlayer {
+namespace {
+
+// The dovetail's case (d) at ε = 1e-3 on the coarse mesh (h = 0.05 along S): cheap, and a
+// scene where part of the layer is a free film, so its position is not unique.
+struct CoarseDovetailLayer {
+  dovetail::LimitMeshes limit;
+  Model model;
+  std::unique_ptr<LinearSystem> system;
+  std::unique_ptr<ContactProblem> problem;
+  std::unique_ptr<CondensedInterface> condensed;
+  CoarseDovetailLayer() {
+    dovetail::MeshOptions mesh;
+    mesh.h_interface = 0.05;
+    mesh.h_far = 0.2;
+    limit = dovetail::make_limit_meshes(mesh);
+    model = dovetail::make_layer_model(dovetail::make_layer_meshes(limit, 1e-3, 2), dovetail::exponents_of('d'));
+    system = std::make_unique<LinearSystem>(model);
+    problem = std::make_unique<ContactProblem>(*system, dovetail::make_layer_interfaces(model));
+    condensed = std::make_unique<CondensedInterface>(*problem);
+  }
+  SolveReport solve(SolverOptions::LayerPath path) const {
+    SolverOptions options;
+    options.layer_path = path;
+    return solve_fast(*problem, *condensed, options);
+  }
+  int layer_body() const {
+    for (int b = 0; b < system->num_bodies(); ++b)
+      if (system->body_name(b) == "layer") return b;
+    return -1;
+  }
+};
+
+double relative_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return (a - b).norm() / std::max(a.norm(), 1e-300);
+}
+
+// A global bulk norm is dominated by the adherents (here the layer carries 1.5 % of the global
+// force scale): an imbalance of the layer a billion times smaller than its own forces, ten times
+// the tolerance for that body, passes it. The per-body residual must catch it.
+TEST(PerBodyResidual, CatchesALayerImbalanceThatTheGlobalNormHides) {
+  const CoarseDovetailLayer scene;
+  const SolveReport report = scene.solve(SolverOptions::LayerPath::DualThenProximal);
+  ASSERT_TRUE(report.converged) << report.message;
+  const LinearSystem& system = *scene.system;
+  const int layer = scene.layer_body();
+  ASSERT_GE(layer, 0);
+  // The layer's own forces, and one of its DOFs to push.
+  const Eigen::VectorXd contact = scene.problem->B().transpose() * report.r;
+  double layer_force2 = 0;
+  int dof = -1;
+  for (int i = 0; i < system.num_free(); ++i)
+    if (system.body_of(i) == layer) {
+      layer_force2 += contact[i] * contact[i];
+      if (dof < 0) dof = i;
+    }
+  ASSERT_GE(dof, 0);
+  // Move that DOF so that its unbalanced force is 1e-9 of what the layer carries.
+  Eigen::VectorXd u = report.u;
+  u[dof] += 1e-9 * std::sqrt(layer_force2) / system.K().coeff(dof, dof);
+  const Residual mutated = contact_residual(*scene.problem, u, report.r);
+  EXPECT_GT(mutated.per_body[layer], 5e-10);
+  EXPECT_GT(mutated.value(), 1e-10);  // not converged
+  // The global norm of earlier stops, for the same state: below the tolerance, i.e. blind to it.
+  const Eigen::VectorXd imbalance = system.K() * u - system.F() - contact;
+  const double global = imbalance.norm() / std::max(system.F().norm(), contact.norm());
+  EXPECT_LT(global, 1e-10) << "the scene no longer shows what a global norm hides";
+}
+
+// Two selections of the film's position (the dual path's eigenvalue floor and the proximal
+// path's pull towards the previous iterate) must agree on what the problem determines: the
+// adherents' displacements, the interface forces and the reactions (SPEC §1.5: ≤ 1e-8).
+TEST(FloatingLayer, TwoSelectionsAgreeOnWhatTheProblemDetermines) {
+  const CoarseDovetailLayer scene;
+  const SolveReport dual = scene.solve(SolverOptions::LayerPath::Dual);
+  const SolveReport proximal = scene.solve(SolverOptions::LayerPath::Proximal);
+  ASSERT_TRUE(dual.converged) << dual.message;
+  ASSERT_TRUE(proximal.converged) << proximal.message;
+  const LinearSystem& system = *scene.system;
+  std::vector<int> adherent;
+  for (int i = 0; i < system.num_free(); ++i)
+    if (!system.floating(i)) adherent.push_back(i);
+  Eigen::VectorXd a(adherent.size()), b(adherent.size());
+  for (size_t k = 0; k < adherent.size(); ++k) {
+    a[k] = dual.u[adherent[k]];
+    b[k] = proximal.u[adherent[k]];
+  }
+  EXPECT_LT(relative_difference(a, b), 1e-8);
+  EXPECT_LT(relative_difference(dual.r, proximal.r), 1e-8);
+  const auto reactions = [&](const SolveReport& r) {
+    return system.reactions(system.expand(r.u), system.scatter(scene.problem->B().transpose() * r.r));
+  };
+  const auto ra = reactions(dual), rb = reactions(proximal);
+  for (const auto& [name, R] : ra) EXPECT_LT((R - rb.at(name)).norm() / R.norm(), 1e-8) << name;
+}
+
+}  // namespace
+}  // namespace thinlayer
