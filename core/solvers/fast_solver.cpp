@@ -1,5 +1,6 @@
 #include "core/solvers/fast_solver.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -28,6 +29,16 @@ bool floating_bodies_free(const Condensed& c, const std::vector<Active>& statuse
     if (touches_floating && statuses[k] != Active::Gap) return false;
   }
   return true;
+}
+
+// Has the layer's film moved more than a hundred times as far as the bodies that hold it?
+bool film_far_off(const ContactProblem& problem, const CondensedInterface& condensed, const FloatingLayerRun& layer) {
+  if (!layer.w.size()) return false;
+  const Eigen::VectorXd u = condensed.displacement(problem, layer.r, layer.w);
+  double held = 0;
+  for (int i = 0; i < problem.system().num_free(); ++i)
+    if (!problem.system().floating(i)) held = std::max(held, std::abs(u[i]));
+  return layer.w.cwiseAbs().maxCoeff() > 100 * held;
 }
 
 StopCause stop_cause(const Condensed& c, const std::vector<Active>& statuses, const ActiveSetRun& run,
@@ -87,9 +98,9 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
     // A floating body (the thin layer): the dual path first, the proximal path if it stops
     // short (SolverOptions::layer_path). The better of the two is reported, with the steps of both.
     using Path = SolverOptions::LayerPath;
-    const int dual_cap = 500, proximal_cap = 1000;
-    FloatingLayerRun layer;
-    layer.residual = std::numeric_limits<double>::infinity();
+    const int dual_cap = 500, proximal_cap = 1000, proximal_cap_with_answer = 200;
+    FloatingLayerRun layer, far_film;
+    layer.residual = far_film.residual = std::numeric_limits<double>::infinity();
     if (options.layer_path != Path::Proximal) {
       layer = solve_floating_layer(c, problem, condensed, options, r, w,
                                    options.max_iterations > 0 ? options.max_iterations : dual_cap);
@@ -97,20 +108,26 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       // A film moved a hundred times further than the bodies that hold it sits in a mode whose
       // stiffness is below round-off: the residual cannot see it, but the selection is wild (the
       // bar's row 5 at ε = 1e-4: a free film end thrown 181 mm off, one node's status and the
-      // reaction at D 6 % apart from the proximal path's answer). Take the proximal path then.
-      const Eigen::VectorXd u = condensed.displacement(problem, layer.r, layer.w);
-      double held = 0;
-      for (int i = 0; i < problem.system().num_free(); ++i)
-        if (!problem.system().floating(i)) held = std::max(held, std::abs(u[i]));
-      if (layer.w.size() && layer.w.cwiseAbs().maxCoeff() > 100 * held) {
+      // reaction at D 6 % apart from the proximal path's answer, both at a residual of 4e-14).
+      // The proximal path is tried first then, and the far film kept as the answer if it fails:
+      // it is a solution all the same (SPEC 1.5), only a less natural one.
+      if (film_far_off(problem, condensed, layer)) {
+        far_film = std::move(layer);
+        layer = FloatingLayerRun{};
         layer.residual = std::numeric_limits<double>::infinity();
-        path = "dual (film selection rejected)";
+        layer.newton_steps = far_film.newton_steps;
+        layer.outer_steps = far_film.outer_steps;
+        path = "dual (its film far off)";
       }
     }
     if (options.layer_path != Path::Dual && !(layer.residual <= options.tolerance)) {
-      const int cap = options.max_iterations > 0 ? options.max_iterations : proximal_cap;
+      // With a converged far-film answer in hand the proximal path only gets a short try (the
+      // bar's row 5 at ε = 1e-4 needs 30 steps; the dovetail's (d) at 1e-6 fails after 2000).
+      const bool have_answer = far_film.residual <= options.tolerance;
+      const int cap = std::min(options.max_iterations > 0 ? options.max_iterations : proximal_cap,
+                               have_answer ? proximal_cap_with_answer : proximal_cap);
       FloatingLayerRun fallback = solve_layer_proximal(c, problem, condensed, options, r, w, cap);
-      if (!(fallback.residual <= options.tolerance)) {
+      if (!(fallback.residual <= options.tolerance) && !have_answer) {
         // The proximal path depends on the complementarity parameter: a second attempt with a
         // ten times smaller one rescued scenes at earlier stops (the dovetail's (e) at 5e-4).
         const Condensed c_small = condense(problem, condensed, 0.1 * options.complementarity_scale,
@@ -126,6 +143,12 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       if (fallback.residual < layer.residual) layer = std::move(fallback);
       else layer.newton_steps = fallback.newton_steps;
       path = path.empty() ? "proximal" : path + ", then proximal";
+    }
+    if (!(layer.residual <= options.tolerance) && far_film.residual < layer.residual) {
+      far_film.newton_steps = layer.newton_steps;
+      far_film.outer_steps = layer.outer_steps;
+      layer = std::move(far_film);
+      path += "; the dual's answer kept";
     }
     r = layer.r;
     w = layer.w;
