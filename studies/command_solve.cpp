@@ -15,6 +15,7 @@
 #include "core/io/vtu_writer.h"
 #include "studies/args.h"
 #include "studies/bar_scenes.h"
+#include "studies/command_scene.h"
 #include "studies/dovetail_scenes.h"
 #include "studies/format.h"
 #include "studies/options.h"
@@ -23,6 +24,7 @@
 namespace thinlayer {
 
 const char* const solve_help = R"(usage: thinlayer solve --case bar|dovetail [--mode limit|layer] [options] [--out FILE.h5] [--vtu FILE.vtu]
+       thinlayer solve --scene FILE.json [--mode limit|layer] [--eps E] [--out FILE.h5] [--vtu FILE.vtu] [--json]
 
 Solves one scene and prints its gap/slide/stick counts, iterations, residual and times.
 
@@ -66,6 +68,12 @@ Both cases:
                        solve warm started from the one before, then with the scene's own f, which
                        alone decides convergence (a continuation for hard layer scenes; README,
                        known limitations). Each Fi finite and >= 0; the scene's f must be > 0.
+
+Scene files (your own joint):
+  --scene FILE.json    a JSON scene naming the physical groups of a gmsh .geo or .msh (README,
+                       "Your own joint"; cases/lap_joint/lap_joint.json); with it only --mode,
+                       --eps (mm), --out, --vtu, --json, --solver, --tolerance, --max-iterations,
+                       --omega and --verbose apply
 
 Numbers are decimal (1e-3, 0.5, inf where a value may be infinite); no hex, no blanks.
 Exit status: 0 converged, 1 not converged (the result is still written), 2 bad input,
@@ -323,6 +331,7 @@ void write_results(const std::string& path, const SceneRecord& record) {
 }  // namespace
 
 int command_solve(const std::vector<std::string>& argv) {
+  if (names_scene(argv)) return command_solve_scene(argv);  // the user's own joint (SPEC §5)
   SolveInput in;
   try {
     in = parse_solve(argv);

@@ -15,6 +15,7 @@
 #include "core/io/h5_writer.h"
 #include "core/io/output_target.h"
 #include "studies/args.h"
+#include "studies/command_scene.h"
 #include "studies/stopwatch.h"
 #include "studies/summary_json.h"
 #include "studies/convergence_study.h"
@@ -61,6 +62,10 @@ Studies:
                distorted meshes, interfaces that open everywhere, capped solves; each scene
                converges or stops with a named cause (iteration cap, singular system, loss of
                accuracy with a condition estimate), and no NaN/Inf is written
+
+Your own joint: study convergence --scene FILE.json, study validity --scene FILE.json run S2
+and S3 on a scene file (README, "Your own joint"); options --out, --eps LIST (mm), --tolerance
+(default 1e-10 there), --threads, --quiet and (validity) --bisection-steps.
 
 Options:
   --out DIR          write DIR/results.h5 (the scenes and the study's tables)
@@ -236,6 +241,8 @@ int command_study(const std::vector<std::string>& argv) {
     if (std::find(names.begin(), names.end(), name) == names.end())
       throw std::invalid_argument("unknown study '" + name +
                                   "' (expected table3, dovetail, convergence, validity, thresholds, asymptotics, timing or stress)");
+    // S2/S3 on the user's own joint (SPEC §5).
+    if (names_scene(argv)) return command_study_scene(name, std::vector<std::string>(argv.begin() + 1, argv.end()));
     in = parse(std::vector<std::string>(argv.begin() + 1, argv.end()), name);
   } catch (const std::exception& e) {
     if (is_root()) std::cerr << "thinlayer study: " << e.what() << "\n";  // every rank parsed the same

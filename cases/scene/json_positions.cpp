@@ -1,0 +1,224 @@
+#include "cases/scene/json_positions.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace thinlayer {
+
+namespace {
+
+// Walks the text as nlohmann's lexer reads it, and counts how far it has read: the SAX events
+// carry no position, but they fire in reading order, so "how far" tells where they are.
+class CountingIterator {
+ public:
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+
+  CountingIterator(const char* p, const char* base, std::size_t* read) : p_(p), base_(base), read_(read) {}
+  reference operator*() const { return *p_; }
+  CountingIterator& operator++() {
+    ++p_;
+    *read_ = static_cast<std::size_t>(p_ - base_);
+    return *this;
+  }
+  CountingIterator operator++(int) {
+    CountingIterator before = *this;
+    ++*this;
+    return before;
+  }
+  bool operator==(const CountingIterator& o) const { return p_ == o.p_; }
+  bool operator!=(const CountingIterator& o) const { return p_ != o.p_; }
+
+ private:
+  const char* p_;
+  const char* base_;
+  std::size_t* read_;
+};
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+// Records the position of every key and array element, and refuses duplicate keys.
+class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  PositionRecorder(const std::string& text, const std::size_t* read, PositionedJson& out)
+      : text_(text), read_(read), out_(out) {}
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    value();
+    stack_.push_back({true, 0, pointer_, {}});
+    return true;
+  }
+  bool key(string_t& k) override {
+    Frame& f = stack_.back();
+    const std::size_t start = next_token(last_end_, "{,");
+    if (!f.keys.insert(k).second) {
+      duplicate_ = "key '" + k + "' given twice";
+      duplicate_at_ = position_of(text_, start);
+      return false;
+    }
+    pointer_ = f.pointer + "/" + escape(k);
+    out_.positions[pointer_] = position_of(text_, start);
+    last_end_ = *read_;
+    pending_key_ = true;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override {
+    value();
+    stack_.push_back({false, 0, pointer_, {}});
+    return true;
+  }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t byte, const std::string&, const nlohmann::detail::exception& e) override {
+    error_byte_ = byte;
+    error_ = e.what();
+    return false;
+  }
+
+  const std::string& duplicate() const { return duplicate_; }
+  TextPosition duplicate_at() const { return duplicate_at_; }
+  const std::string& error() const { return error_; }
+  std::size_t error_byte() const { return error_byte_; }
+
+ private:
+  struct Frame {
+    bool object = false;
+    int index = 0;
+    std::string pointer;
+    std::set<std::string> keys;
+  };
+
+  // RFC 6901: '~' → "~0", '/' → "~1".
+  static std::string escape(const std::string& k) {
+    std::string s;
+    for (char c : k) s += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+    return s;
+  }
+
+  // The first byte at or after `from` that is neither blank nor one of `separators`: the start
+  // of the next token (the lexer may have read one byte past a number, a separator included).
+  std::size_t next_token(std::size_t from, const char* separators) const {
+    std::size_t i = from;
+    while (i < text_.size() && (is_blank(text_[i]) || std::string(separators).find(text_[i]) != std::string::npos)) ++i;
+    return i;
+  }
+
+  // A value starts: an array element gets its own pointer and position; a member value has
+  // its key's.
+  bool value() {
+    if (stack_.empty()) {
+      out_.positions[""] = position_of(text_, next_token(0, ""));
+    } else if (!stack_.back().object) {
+      Frame& f = stack_.back();
+      pointer_ = f.pointer + "/" + std::to_string(f.index++);
+      out_.positions[pointer_] = position_of(text_, next_token(last_end_, "[,"));
+    } else if (!pending_key_) {
+      return false;  // cannot happen in valid JSON
+    }
+    pending_key_ = false;
+    last_end_ = *read_;
+    return true;
+  }
+
+  bool close() {
+    stack_.pop_back();
+    pointer_ = stack_.empty() ? "" : stack_.back().pointer;
+    last_end_ = *read_;
+    return true;
+  }
+
+  const std::string& text_;
+  const std::size_t* read_;
+  PositionedJson& out_;
+  std::vector<Frame> stack_;
+  std::string pointer_;
+  std::size_t last_end_ = 0;
+  bool pending_key_ = false;
+  std::string duplicate_, error_;
+  TextPosition duplicate_at_;
+  std::size_t error_byte_ = 0;
+};
+
+std::string where(const std::string& source, TextPosition p) {
+  return source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) + ": ";
+}
+
+// nlohmann's message without its "[json.exception.parse_error.101] parse error at line 3,
+// column 5: " prefix (the position is given our way, in front).
+std::string syntax_message(const std::string& what) {
+  const std::size_t s = what.find("syntax error");
+  return s == std::string::npos ? what : what.substr(s);
+}
+
+}  // namespace
+
+TextPosition position_of(const std::string& text, std::size_t offset) {
+  TextPosition p;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++p.line;
+      p.column = 1;
+    } else {
+      ++p.column;
+    }
+  }
+  return p;
+}
+
+TextPosition PositionedJson::at(const std::string& pointer) const {
+  std::string p = pointer;
+  while (true) {
+    if (auto it = positions.find(p); it != positions.end()) return it->second;
+    if (p.empty()) return {};
+    p = p.substr(0, p.rfind('/'));
+  }
+}
+
+void PositionedJson::fail(const std::string& pointer, const std::string& what) const {
+  throw InputError(where(source, at(pointer)) + what);
+}
+
+PositionedJson parse_positioned_json(const std::string& text, const std::string& source) {
+  PositionedJson out;
+  out.source = source;
+  std::size_t read = 0;
+  PositionRecorder recorder(text, &read, out);
+  const CountingIterator first(text.data(), text.data(), &read), last(text.data() + text.size(), text.data(), &read);
+  if (!nlohmann::json::sax_parse(first, last, &recorder)) {
+    if (!recorder.duplicate().empty()) throw InputError(where(source, recorder.duplicate_at()) + recorder.duplicate());
+    // nlohmann counts the byte it stopped at from 1.
+    const std::size_t byte = recorder.error_byte() > 0 ? recorder.error_byte() - 1 : 0;
+    throw InputError(where(source, position_of(text, byte)) + syntax_message(recorder.error()));
+  }
+  out.value = nlohmann::json::parse(text);  // cannot fail: the same text passed above
+  return out;
+}
+
+PositionedJson read_positioned_json(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError("scene file " + path + " does not exist");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError("scene file " + path + " is not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read scene file " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError("cannot read scene file " + path);
+  return parse_positioned_json(text.str(), path);
+}
+
+}  // namespace thinlayer

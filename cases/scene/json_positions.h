@@ -1,0 +1,47 @@
+#pragma once
+// A JSON text parsed with the position (line, column) of every value, so that a scene file's
+// schema errors can name where the bad key or value is, like its syntax errors do (SPEC §5).
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace thinlayer {
+
+struct TextPosition {
+  int line = 1, column = 1;  // both 1-based; the column counts bytes
+};
+
+// A bad input file: the message already names the file, line and column.
+class InputError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct PositionedJson {
+  std::string source;  // the file's name, as the user gave it: the prefix of every message
+  nlohmann::json value;
+  // JSON pointer ("/interface/friction", "/supports/0") → where that member's key (object
+  // member) or that value (array element) begins. "" → the document's first value.
+  std::map<std::string, TextPosition> positions;
+
+  TextPosition at(const std::string& pointer) const;
+  // "<source>:<line>:<column>: <what>" at the position of `pointer` (or of its nearest parent
+  // that has one), as an InputError.
+  [[noreturn]] void fail(const std::string& pointer, const std::string& what) const;
+};
+
+// Parses `text` (nlohmann-json, strict RFC 8259: no comments, no trailing commas). A syntax
+// error throws InputError "<source>:<line>:<column>: <nlohmann's description>". A key given
+// twice in one object is refused too (nlohmann keeps the last one silently, which would hide a
+// typo's twin).
+PositionedJson parse_positioned_json(const std::string& text, const std::string& source);
+
+// Reads and parses a file; a file that cannot be read throws InputError naming it.
+PositionedJson read_positioned_json(const std::string& path);
+
+// The position of byte `offset` (0-based) in `text`.
+TextPosition position_of(const std::string& text, std::size_t offset);
+
+}  // namespace thinlayer

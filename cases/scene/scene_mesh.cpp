@@ -1,0 +1,157 @@
+#include "cases/scene/scene_mesh.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "core/mesh/gmsh_session.h"
+
+namespace thinlayer {
+
+namespace {
+
+// The element size grows by at most this much per unit distance from the interface: the
+// dovetail's rate (cases/dovetail/dovetail_mesh.cpp), gentle enough for well-shaped quads.
+constexpr double kSizeGrowthRate = 0.2;
+
+// Sets a gmsh number option (process-global) for the lifetime of the object.
+class ScopedOption {
+ public:
+  ScopedOption(std::string name, double value) : name_(std::move(name)) {
+    gmsh::option::getNumber(name_, previous_);
+    gmsh::option::setNumber(name_, value);
+  }
+  ~ScopedOption() {
+    try {
+      gmsh::option::setNumber(name_, previous_);
+    } catch (...) {  // a destructor must not throw
+    }
+  }
+  ScopedOption(const ScopedOption&) = delete;
+  ScopedOption& operator=(const ScopedOption&) = delete;
+
+ private:
+  std::string name_;
+  double previous_ = 0;
+};
+
+// Physical groups by (dimension, name) → model entity tags.
+std::map<std::pair<int, std::string>, std::vector<int>> physical_groups() {
+  std::map<std::pair<int, std::string>, std::vector<int>> groups;
+  gmsh::vectorpair dim_tags;
+  gmsh::model::getPhysicalGroups(dim_tags);
+  for (const auto& [dim, tag] : dim_tags) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    if (name.empty()) continue;
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    auto& list = groups[{dim, name}];
+    list.insert(list.end(), entities.begin(), entities.end());
+  }
+  return groups;
+}
+
+void set_interface_sizes(const SceneSpec& spec, const std::vector<int>& interface_curves) {
+  namespace field = gmsh::model::mesh::field;
+  const double h_i = *spec.h_interface, h_f = *spec.h_far;
+  std::vector<double> curves(interface_curves.begin(), interface_curves.end());
+  const int distance = field::add("Distance");
+  field::setNumbers(distance, "CurvesList", curves);
+  field::setNumber(distance, "NumPointsPerCurve", 200);
+  const int threshold = field::add("Threshold");
+  field::setNumber(threshold, "InField", distance);
+  field::setNumber(threshold, "SizeMin", h_i);
+  field::setNumber(threshold, "SizeMax", h_f);
+  field::setNumber(threshold, "DistMin", 0);
+  field::setNumber(threshold, "DistMax", std::max((h_f - h_i) / kSizeGrowthRate, h_f));
+  field::setAsBackgroundMesh(threshold);
+  // The field alone decides: no size from the points of the .geo, none from curvature.
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+}
+
+void generate(const SceneSpec& spec, const std::vector<int>& interface_curves) {
+  if (spec.h_interface) set_interface_sizes(spec, interface_curves);
+  if (spec.element == ElementType::Q1) {
+    gmsh::option::setNumber("Mesh.RecombineAll", 1);
+    gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 2);  // simple full-quad: no triangle left
+    gmsh::option::setNumber("Mesh.Algorithm", 6);               // gmsh's default; 8 crashes (SPEC §7)
+  } else {
+    gmsh::option::setNumber("Mesh.RecombineAll", 0);
+  }
+  gmsh::model::mesh::generate(2);
+}
+
+double bounding_size(const std::vector<Mesh>& meshes) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
+  for (const Mesh& m : meshes)
+    for (Eigen::Index i = 0; i < m.nodes.rows(); ++i) {
+      lo = lo.cwiseMin(m.nodes.row(i).transpose());
+      hi = hi.cwiseMax(m.nodes.row(i).transpose());
+    }
+  return (hi - lo).norm();
+}
+
+[[noreturn]] void fail_at(const std::string& where, const std::string& what) { throw InputError(where + ": " + what); }
+
+}  // namespace
+
+SceneMeshes load_scene_meshes(const SceneSpec& spec) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string file = spec.geometry.empty() ? spec.mesh : spec.geometry;
+  GmshModelScope scope("scene");
+  // gmsh's own options for this model only: the scope clears the model, the options stay
+  // process-global, so they are set back when done.
+  ScopedOption recombine_all("Mesh.RecombineAll", 0), recombination("Mesh.RecombinationAlgorithm", 1),
+      algorithm("Mesh.Algorithm", 6), from_boundary("Mesh.MeshSizeExtendFromBoundary", 1),
+      from_points("Mesh.MeshSizeFromPoints", 1), from_curvature("Mesh.MeshSizeFromCurvature", 0);
+  SceneMeshes out;
+  try {
+    with_gmsh_errors([&] { gmsh::open(file); });
+  } catch (const std::exception& e) {
+    fail_at(spec.geometry_where, "gmsh cannot read " + file + ": " + e.what());
+  }
+  return with_gmsh_errors([&] {
+    const auto groups = physical_groups();
+    auto find = [&](int dim, const std::string& name) -> const std::vector<int>* {
+      auto it = groups.find({dim, name});
+      return it == groups.end() ? nullptr : &it->second;
+    };
+    for (const auto& [key, tags] : groups) (key.first == 1 ? out.curve_groups : out.point_groups).insert(key.second);
+    for (const SceneBodySpec& b : spec.bodies)
+      if (!find(2, b.group)) fail_at(b.group_where, "body '" + b.name + "': group '" + b.group + "' is no physical surface of " + file);
+    const std::vector<int>* interface = find(1, spec.interface.group);
+    if (!interface) fail_at(spec.interface.group_where, "interface group '" + spec.interface.group + "' is no physical curve of " + file);
+    for (const SceneSupportSpec& s : spec.supports)
+      if (!find(1, s.group) && !find(0, s.group))
+        fail_at(s.where, "support group '" + s.group + "' is no physical curve or point of " + file);
+    for (const SceneLoadSpec& l : spec.loads)
+      if (!find(1, l.group)) fail_at(l.where, "load group '" + l.group + "' is no physical curve of " + file);
+
+    if (!spec.geometry.empty()) generate(spec, *interface);
+    std::vector<NamedBoundary> boundaries;
+    for (const auto& [key, tags] : groups)
+      if (key.first <= 1) {
+        // A name used for both a curve and a point: the curve wins (a support may be either).
+        if (key.first == 0 && groups.count({1, key.second})) continue;
+        boundaries.push_back({key.second, key.first, tags});
+      }
+    for (const SceneBodySpec& b : spec.bodies) {
+      Mesh m = mesh_from_gmsh(*find(2, b.group), boundaries);
+      if (m.element != spec.element)
+        fail_at(b.group_where, "body '" + b.name + "' is meshed with " + to_string(m.element) + " cells, the scene asks for " +
+                                   to_string(spec.element));
+      out.bodies.push_back(std::move(m));
+    }
+    out.size = bounding_size(out.bodies);
+    out.meshing_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  });
+}
+
+}  // namespace thinlayer

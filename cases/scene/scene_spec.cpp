@@ -1,0 +1,291 @@
+#include "cases/scene/scene_spec.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace thinlayer {
+
+namespace {
+
+using nlohmann::json;
+
+const char* type_name(const json& v) {
+  if (v.is_null()) return "null";
+  if (v.is_boolean()) return "a boolean";
+  if (v.is_number()) return "a number";
+  if (v.is_string()) return "a string";
+  if (v.is_array()) return "an array";
+  return "an object";
+}
+
+// One JSON object of the scene file: its allowed keys, and typed access that fails at the
+// key's position.
+class ObjectReader {
+ public:
+  ObjectReader(const PositionedJson& doc, std::string pointer, std::string what, std::set<std::string> allowed)
+      : doc_(doc), pointer_(std::move(pointer)), what_(std::move(what)) {
+    const json& v = value_at(pointer_);
+    if (!v.is_object()) doc_.fail(pointer_, what_ + " must be an object, not " + type_name(v));
+    for (const auto& [key, _] : v.items())
+      if (!allowed.count(key)) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        doc_.fail(child(key), "unknown key '" + key + "' in " + what_ + " (expected one of: " + list + ")");
+      }
+  }
+
+  bool has(const std::string& key) const { return object().contains(key); }
+  std::string child(const std::string& key) const { return pointer_ + "/" + key; }
+  std::string where(const std::string& key) const {
+    const TextPosition p = doc_.at(child(key));
+    return doc_.source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
+  }
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const { doc_.fail(child(key), message); }
+  [[noreturn]] void fail_here(const std::string& message) const { doc_.fail(pointer_, message); }
+
+  const json& require(const std::string& key) const {
+    if (!has(key)) doc_.fail(pointer_, what_ + " has no '" + key + "'");
+    return object().at(key);
+  }
+  std::string text(const std::string& key) const {
+    const json& v = require(key);
+    if (!v.is_string()) fail(key, "'" + key + "' in " + what_ + " must be a string, not " + type_name(v));
+    if (v.get<std::string>().empty()) fail(key, "'" + key + "' in " + what_ + " is empty");
+    return v.get<std::string>();
+  }
+  // A finite number in [lo, hi] (hi may be excluded), or +inf as the string "inf" where allowed.
+  double number(const std::string& key, double lo, double hi, bool hi_open = false, bool inf_allowed = false) const {
+    return number_value(require(key), child(key), "'" + key + "' in " + what_, lo, hi, hi_open, inf_allowed);
+  }
+  double number_value(const json& v, const std::string& pointer, const std::string& name, double lo, double hi,
+                      bool hi_open = false, bool inf_allowed = false) const {
+    double x = 0;
+    if (inf_allowed && v.is_string() && v.get<std::string>() == "inf") return std::numeric_limits<double>::infinity();
+    if (!v.is_number())
+      doc_.fail(pointer, name + " must be a number" + (inf_allowed ? std::string(" or \"inf\"") : "") + ", not " +
+                             type_name(v));
+    x = v.get<double>();
+    if (!std::isfinite(x)) doc_.fail(pointer, name + " overflows a double");
+    if (x < lo || x > hi || (hi_open && x == hi))
+      doc_.fail(pointer, name + " must be in [" + num(lo) + ", " + num(hi) + (hi_open ? ")" : "]") + ", got " + num(x));
+    return x;
+  }
+  const json& object() const { return value_at(pointer_); }
+  const PositionedJson& doc() const { return doc_; }
+
+ private:
+  static std::string num(double x) {
+    if (std::isinf(x)) return "inf";
+    std::ostringstream s;
+    s << x;
+    return s.str();
+  }
+  const json& value_at(const std::string& pointer) const { return doc_.value.at(json::json_pointer(pointer)); }
+
+  const PositionedJson& doc_;
+  std::string pointer_, what_;
+};
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr double modulus_max = 1e12;  // daN/mm²: far above any solid (diamond ~ 5e4)
+
+std::string resolve(const std::string& folder, const std::string& path) {
+  const std::filesystem::path p(path);
+  return p.is_absolute() ? path : (std::filesystem::path(folder) / p).string();
+}
+
+void read_geometry(const ObjectReader& root, SceneSpec& s) {
+  if (root.has("geometry") == root.has("mesh")) root.fail_here("the scene needs exactly one of 'geometry' (.geo) and 'mesh' (.msh)");
+  const std::string key = root.has("geometry") ? "geometry" : "mesh";
+  const std::string path = resolve(s.folder, root.text(key));
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (key == "geometry" && extension != ".geo") root.fail(key, "'geometry' must name a gmsh .geo file, got " + path);
+  if (key == "mesh" && extension != ".msh") root.fail(key, "'mesh' must name a gmsh .msh file, got " + path);
+  if (!std::filesystem::is_regular_file(path)) root.fail(key, key + " file " + path + " does not exist");
+  (key == "geometry" ? s.geometry : s.mesh) = path;
+  s.geometry_where = root.where(key);
+  if (root.has("mesh_size")) {
+    if (key == "mesh") root.fail("mesh_size", "'mesh_size' applies to a 'geometry' only (a .msh is used as is)");
+    const ObjectReader size(root.doc(), root.child("mesh_size"), "mesh_size", {"interface", "far"});
+    s.h_interface = size.number("interface", 0, inf);
+    s.h_far = size.number("far", 0, inf);
+    if (!(*s.h_interface > 0) || !(*s.h_far > 0)) size.fail_here("mesh sizes must be > 0");
+    if (*s.h_far < *s.h_interface) size.fail("far", "'far' must be >= 'interface'");
+  }
+}
+
+SceneBodySpec read_body(const PositionedJson& doc, const std::string& name, const std::string& pointer) {
+  const ObjectReader b(doc, pointer, "body '" + name + "'", {"group", "lambda", "mu"});
+  SceneBodySpec body;
+  body.name = name;
+  body.group = b.text("group");
+  body.group_where = b.where("group");
+  body.lambda = b.number("lambda", -modulus_max, modulus_max);
+  body.mu = b.number("mu", 0, modulus_max);
+  if (!(body.mu > 0) || !(body.lambda + body.mu > 0)) b.fail_here("body '" + name + "' needs mu > 0 and lambda + mu > 0");
+  return body;
+}
+
+void read_interface(const ObjectReader& root, SceneSpec& s) {
+  const ObjectReader i(root.doc(), root.child("interface"), "interface",
+                       {"group", "plus", "minus", "friction", "layer", "law"});
+  SceneInterfaceSpec& f = s.interface;
+  f.where = root.where("interface");
+  f.group = i.text("group");
+  f.group_where = i.where("group");
+  f.plus = i.text("plus");
+  f.minus = i.text("minus");
+  if (s.body_index(f.plus) < 0) i.fail("plus", "'plus' names no body of 'bodies': " + f.plus);
+  if (s.body_index(f.minus) < 0) i.fail("minus", "'minus' names no body of 'bodies': " + f.minus);
+  if (f.plus == f.minus) i.fail("minus", "'plus' and 'minus' are the same body");
+  f.friction = i.number("friction", 0, 1e6);
+  if (i.has("layer") == i.has("law")) i.fail_here("the interface needs exactly one of 'layer' and 'law'");
+  if (i.has("layer")) {
+    const ObjectReader l(root.doc(), i.child("layer"), "layer", {"gamma", "delta", "lambda_g", "mu_g"});
+    SceneLayerSpec layer;
+    layer.gamma = l.number("gamma", 0, 100);
+    layer.delta = l.number("delta", 0, 2, /*hi_open=*/true);
+    layer.lambda_g = l.number("lambda_g", 0, modulus_max);
+    layer.mu_g = l.number("mu_g", 0, modulus_max);
+    if (!(layer.mu_g > 0)) l.fail("mu_g", "'mu_g' must be > 0 (the layer needs a shear stiffness)");
+    f.layer = layer;
+  } else {
+    const ObjectReader l(root.doc(), i.child("law"), "law", {"lambda_bar", "mu_bar"});
+    f.law = InterfaceLaw::make(l.number("lambda_bar", 0, inf, false, true), l.number("mu_bar", 0, inf, false, true),
+                               f.friction);
+  }
+}
+
+std::optional<double> component(const ObjectReader& r, const nlohmann::json& v, const std::string& pointer) {
+  if (v.is_null()) return std::nullopt;
+  return r.number_value(v, pointer, "a component of 'u'", -1e6, 1e6);
+}
+
+void read_supports(const ObjectReader& root, SceneSpec& s) {
+  if (!root.has("supports")) return;
+  const json& list = root.object().at("supports");
+  if (!list.is_array()) root.fail("supports", "'supports' must be an array, not " + std::string(type_name(list)));
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string p = root.child("supports") + "/" + std::to_string(k);
+    const ObjectReader r(root.doc(), p, "support " + std::to_string(k), {"group", "u"});
+    SceneSupportSpec sup;
+    sup.group = r.text("group");
+    sup.where = r.where("group");
+    const json& u = r.require("u");
+    if (!u.is_array() || u.size() != 2) r.fail("u", "'u' must be an array of two components (a number in mm, or null: free)");
+    sup.u = {component(r, u[0], r.child("u") + "/0"), component(r, u[1], r.child("u") + "/1")};
+    if (!sup.u[0] && !sup.u[1]) r.fail("u", "'u' leaves both components free: that support holds nothing");
+    s.supports.push_back(sup);
+  }
+}
+
+void read_loads(const ObjectReader& root, SceneSpec& s) {
+  if (!root.has("loads")) return;
+  const json& list = root.object().at("loads");
+  if (!list.is_array()) root.fail("loads", "'loads' must be an array, not " + std::string(type_name(list)));
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string p = root.child("loads") + "/" + std::to_string(k);
+    const ObjectReader r(root.doc(), p, "load " + std::to_string(k), {"group", "traction"});
+    SceneLoadSpec load;
+    load.group = r.text("group");
+    load.where = r.where("group");
+    const json& t = r.require("traction");
+    if (!t.is_array() || t.size() != 2) r.fail("traction", "'traction' must be an array of two numbers (daN/mm^2)");
+    for (int c = 0; c < 2; ++c)
+      load.traction[c] = r.number_value(t[c], r.child("traction") + "/" + std::to_string(c), "a component of 'traction'",
+                                        -1e9, 1e9);
+    s.loads.push_back(load);
+  }
+}
+
+void read_options(const ObjectReader& root, SceneSpec& s) {
+  if (root.has("element")) {
+    const std::string e = root.text("element");
+    if (e != "Q1" && e != "P1") root.fail("element", "'element' must be \"Q1\" or \"P1\", got \"" + e + "\"");
+    s.element = e == "Q1" ? ElementType::Q1 : ElementType::P1;
+  }
+  if (root.has("plane")) {
+    const std::string p = root.text("plane");
+    if (p != "strain" && p != "stress") root.fail("plane", "'plane' must be \"strain\" or \"stress\", got \"" + p + "\"");
+    s.plane = p == "strain" ? PlaneHypothesis::Strain : PlaneHypothesis::Stress;
+  }
+  if (root.has("units")) {
+    const ObjectReader u(root.doc(), root.child("units"), "units", {"length", "force"});
+    if (u.has("length") && u.text("length") != "mm") u.fail("length", "only \"mm\" lengths are supported");
+    if (u.has("force") && u.text("force") != "daN") u.fail("force", "only \"daN\" forces are supported");
+  }
+  if (root.has("eps")) {
+    const json& list = root.object().at("eps");
+    if (!list.is_array() || list.size() < 3) root.fail("eps", "'eps' must be an array of at least 3 thicknesses (mm)");
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const double e = root.number_value(list[k], root.child("eps") + "/" + std::to_string(k), "an 'eps'", 0, 1e6);
+      if (!(e > 0)) root.fail("eps", "every 'eps' must be > 0");
+      s.eps.push_back(e);
+    }
+  }
+  if (root.has("layer_elements")) {
+    const json& v = root.object().at("layer_elements");
+    if (!v.is_number_integer() || v.get<long long>() < 2 || v.get<long long>() > 64)
+      root.fail("layer_elements", "'layer_elements' must be an integer in [2, 64]");
+    s.layer_elements = static_cast<int>(v.get<long long>());
+  }
+}
+
+}  // namespace
+
+int SceneSpec::body_index(const std::string& n) const {
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (bodies[b].name == n) return static_cast<int>(b);
+  return -1;
+}
+
+InterfaceLaw SceneSpec::limit_law() const {
+  if (interface.law) return *interface.law;
+  // lim ε^(p−1) g: ∞ below 1, g at 1, 0 above (paper §3.1.8, Table 1).
+  auto limit_ratio = [](double p, double g) { return p < 1 ? inf : p > 1 ? 0.0 : g; };
+  const SceneLayerSpec& l = *interface.layer;
+  return InterfaceLaw::make(limit_ratio(l.gamma, l.lambda_g), limit_ratio(l.delta, l.mu_g), interface.friction);
+}
+
+SceneSpec scene_spec_from_json(const PositionedJson& doc, const std::string& folder) {
+  const ObjectReader root(doc, "", "the scene",
+                          {"name", "geometry", "mesh", "mesh_size", "element", "plane", "units", "bodies", "interface",
+                           "supports", "loads", "eps", "layer_elements"});
+  SceneSpec s;
+  s.file = doc.source;
+  s.folder = folder;
+  s.name = root.text("name");
+  read_options(root, s);
+  read_geometry(root, s);
+  const json& bodies = root.require("bodies");
+  if (!bodies.is_object() || bodies.empty()) root.fail("bodies", "'bodies' must be an object naming at least one body");
+  // nlohmann's objects are sorted by key; the file's order is the order of the positions.
+  std::vector<std::pair<TextPosition, std::string>> order;
+  for (const auto& [name, _] : bodies.items()) order.push_back({doc.at("/bodies/" + name), name});
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+    return a.first.line != b.first.line ? a.first.line < b.first.line : a.first.column < b.first.column;
+  });
+  for (const auto& [pos, name] : order) {
+    if (name == "layer") root.fail("bodies", "a body may not be called 'layer' (the name of the layer mode's layer)");
+    SceneBodySpec body = read_body(doc, name, "/bodies/" + name);
+    body.where = doc.source + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column);
+    s.bodies.push_back(body);
+  }
+  root.require("interface");
+  read_interface(root, s);
+  read_supports(root, s);
+  read_loads(root, s);
+  return s;
+}
+
+SceneSpec read_scene_spec(const std::string& path) {
+  const PositionedJson doc = read_positioned_json(path);
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  return scene_spec_from_json(doc, folder.empty() ? "." : folder.string());
+}
+
+}  // namespace thinlayer

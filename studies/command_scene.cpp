@@ -1,0 +1,266 @@
+#include "studies/command_scene.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/io/output_target.h"
+#include "core/io/vtu_writer.h"
+#include "studies/args.h"
+#include "studies/format.h"
+#include "studies/options.h"
+#include "studies/process_group.h"
+#include "studies/results_file.h"
+#include "studies/scene_file_study.h"
+
+namespace thinlayer {
+
+const char* const scene_help = R"(Your own joint (SPEC 5): a JSON scene file naming the physical groups of a gmsh geometry
+  thinlayer solve --scene FILE.json [--mode limit|layer] [--eps E] [--out F.h5] [--vtu F.vtu] [--json]
+                  [--solver fast|relaxation] [--tolerance T] [--max-iterations N] [--verbose]
+  thinlayer study convergence --scene FILE.json [--out DIR] [--eps LIST] [--tolerance T] [--threads N] [--quiet]
+  thinlayer study validity    --scene FILE.json [same, and --bisection-steps N]
+  --eps: the layer's thickness in mm (layer mode), at most half the depth of the plus body's
+  elements along the interface; the studies take the scene's "eps" list, else 1e-2 .. 1e-4.
+  The format is in README.md, "Your own joint"; cases/lap_joint/ is an example.
+)";
+
+namespace {
+
+struct SceneSolveInput {
+  std::string scene, mode = "limit", out, vtu;
+  double eps = 0;
+  bool json = false;
+  SolverKind solver = SolverKind::Fast;
+  SolverOptions options;
+};
+
+SceneSolveInput parse_solve(const std::vector<std::string>& argv) {
+  const Args args(argv, {"scene", "mode", "eps", "out", "vtu", "solver", "tolerance", "max-iterations", "omega"},
+                  {"json", "verbose"});
+  SceneSolveInput in;
+  in.scene = args.text("scene", "");
+  if (in.scene.empty()) throw std::invalid_argument("--scene needs a file");
+  in.mode = args.text("mode", "limit");
+  if (in.mode != "limit" && in.mode != "layer") throw std::invalid_argument("unknown mode '" + in.mode + "' (expected limit or layer)");
+  if (in.mode == "layer") {
+    if (!args.has("eps")) throw std::invalid_argument("layer mode needs --eps");
+    in.eps = args.number("eps", 0);
+    if (!(in.eps > 0) || std::isinf(in.eps)) throw std::invalid_argument("--eps must be finite and > 0");
+  } else if (args.has("eps")) {
+    throw std::invalid_argument("--eps applies to the layer mode only");
+  }
+  in.solver = parse_solver(args.text("solver", "fast"));
+  in.options = parse_solver_options(args);
+  in.options.verbose = args.has("verbose");
+  in.json = args.has("json");
+  in.out = args.text("out", "");
+  in.vtu = args.text("vtu", "");
+  auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
+  if (!in.out.empty() && !in.vtu.empty() && target(in.out) == target(in.vtu))
+    throw std::invalid_argument("--out and --vtu name the same file");
+  return in;
+}
+
+nlohmann::json counts_json(const StatusCount& c) { return {{"gap", c.gap}, {"slide", c.slide}, {"stick", c.stick}}; }
+
+std::string summary_line(const SceneSolveInput& in, const SceneRecord& record, const SolveReport& report) {
+  nlohmann::json counts;
+  for (const InterfaceFields& f : record.interfaces) counts[f.name] = counts_json(f.counts());
+  if (!record.combined_status.empty()) {
+    std::vector<NodeStatus> combined;
+    for (int v : record.combined_status) combined.push_back(static_cast<NodeStatus>(v));
+    counts["combined"] = counts_json(count_statuses(combined));
+  }
+  const nlohmann::json j = {
+      {"scene", record.id},
+      {"case", record.text.at("case")},
+      {"scene_file", in.scene},
+      {"mode", in.mode},
+      {"law_case", record.text.at("law_case")},
+      {"solver", report.solver},
+      {"converged", report.converged},
+      {"stop_cause", to_string(report.stop_cause)},
+      {"iterations", report.iterations},
+      {"residual", {{"value", report.residual.value()}, {"interface", report.residual.interface},
+                    {"bulk", report.residual.bulk}, {"tolerance", report.tolerance}}},
+      {"counts", counts},
+      {"times_s", {{"solve", report.wall_time_s}, {"setup", record.numbers.at("setup_time_s")},
+                   {"meshing", record.numbers.at("meshing_time_s")}}},
+      {"out", in.out.empty() ? nullptr : nlohmann::json(in.out)},
+      {"vtu", in.vtu.empty() ? nullptr : nlohmann::json(in.vtu)},
+  };
+  return j.dump();
+}
+
+void print_counts(const char* what, const StatusCount& c) {
+  std::printf("  %-9s gap %3d  slide %3d  stick %3d\n", what, c.gap, c.slide, c.stick);
+}
+
+void print_scene(const SceneFileBulk& bulk, const SceneSolveInput& in, const SceneFileScene& s) {
+  const SceneSpec& spec = bulk.spec();
+  const InterfaceLaw law = spec.limit_law();
+  std::printf("scene %s (%s), %s mode%s; limit law: Table 1 case %c (lambda_bar %g, mu_bar %g daN/mm^3, f %g)\n",
+              spec.name.c_str(), spec.file.c_str(), in.mode.c_str(), in.mode == "layer" ? (" at eps " + plain(in.eps) + " mm").c_str() : "",
+              law.table1_case(), law.lambda_bar, law.mu_bar, law.friction);
+  std::printf("  meshes:");
+  for (std::size_t b = 0; b < spec.bodies.size(); ++b)
+    std::printf(" %s %d nodes%s", spec.bodies[b].name.c_str(), bulk.meshes().bodies[b].num_nodes(),
+                bulk.model().bodies[b].floating ? " (held by contact alone)" : "");
+  std::printf("; %zu nodes on S; meshed in %.3f s\n", bulk.interface_nodes().plus.size(), bulk.meshes().meshing_time_s);
+  if (in.mode == "limit") {
+    print_counts("S", s.limit);
+  } else {
+    const MeshQuality& q = s.layer_quality;
+    std::printf("  layer: %d Q1 cells, angles %.1f..%.1f deg, aspect ratio up to %.3g\n", q.cells, q.min_angle_deg,
+                q.max_angle_deg, q.max_aspect_ratio);
+    print_counts("S+", s.counts.plus_face);
+    print_counts("S-", s.counts.minus_face);
+    print_counts("combined", s.counts.combined);
+  }
+  const SolveReport& r = s.report;
+  const std::string outcome = r.converged ? "converged" : std::string("NOT converged (") + to_string(r.stop_cause) + ")";
+  std::printf("  %s after %d iterations; residual %.3e (interface %.3e, bulk %.3e), tolerance %.0e\n", outcome.c_str(),
+              r.iterations, r.residual.value(), r.residual.interface, r.residual.bulk, r.tolerance);
+  std::printf("  time: solve %.4f s, setup %.4f s\n  reactions (daN/mm):", r.wall_time_s, s.record.numbers.at("setup_time_s"));
+  for (const auto& [name, R] : s.record.reactions) std::printf(" %s (%.6g, %.6g)", name.c_str(), R.x(), R.y());
+  std::printf("\n");
+}
+
+void write_results(const std::string& path, const SceneRecord& record) {
+  auto out = open_results_file(path);
+  write_scene(*out, record);
+  write_checks(*out, {});
+  out->commit();
+}
+
+// One line on stderr, the exit status of its kind.
+int fail(const std::string& command, const std::exception& e, int status) {
+  std::cerr << "thinlayer " << command << ": " << e.what() << "\n";
+  return status;
+}
+
+}  // namespace
+
+bool names_scene(const std::vector<std::string>& argv) {
+  for (const std::string& a : argv)
+    if (a == "--scene" || a.rfind("--scene=", 0) == 0) return true;
+  return false;
+}
+
+int command_solve_scene(const std::vector<std::string>& argv) {
+  SceneSolveInput in;
+  std::unique_ptr<SceneFileBulk> bulk;
+  try {
+    in = parse_solve(argv);
+    if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
+    if (!in.vtu.empty()) check_vtu_target(in.vtu);
+    bulk = std::make_unique<SceneFileBulk>(read_scene_spec(in.scene));
+    if (in.mode == "layer" && !bulk->spec().has_layer())
+      throw std::invalid_argument("scene '" + bulk->spec().name + "' gives a limit law only ('law'): it has no layer mode");
+    if (in.mode == "layer" && in.eps > bulk->thickest_layer())
+      throw std::invalid_argument("--eps " + plain(in.eps) + " mm is too thick for the elements of body '" +
+                                  bulk->spec().interface.plus + "' along the interface: at most " +
+                                  plain(bulk->thickest_layer()) + " mm (half their depth there)");
+  } catch (const std::invalid_argument& e) {
+    return fail("solve", e, 2);
+  } catch (const OutputError& e) {
+    return fail("solve", e, 2);
+  } catch (const std::exception& e) {  // gmsh could not mesh the geometry: the input's fault
+    return fail("solve", e, 2);
+  }
+  try {
+    const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options)
+                                                : solve_scene_file_layer(*bulk, in.eps, in.solver, in.options);
+    if (!in.json) print_scene(*bulk, in, s);
+    if (!in.out.empty()) write_results(in.out, s.record);
+    if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
+    if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
+    if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
+    if (in.json) std::printf("%s\n", summary_line(in, s.record, s.report).c_str());
+    if (!s.report.converged) {
+      std::cerr << "thinlayer solve: " << s.report.message << "\n";
+      return 1;
+    }
+    return 0;
+  } catch (const std::invalid_argument& e) {
+    return fail("solve", e, 2);
+  } catch (const OutputError& e) {
+    return fail("solve", e, 2);
+  } catch (const std::exception& e) {
+    return fail("solve", e, 1);
+  }
+}
+
+int command_study_scene(const std::string& study, const std::vector<std::string>& argv) {
+  SceneStudyOptions options;
+  std::string out_dir;
+  std::unique_ptr<SceneFileBulk> bulk;
+  try {
+    if (study != "convergence" && study != "validity")
+      throw std::invalid_argument("--scene applies to study convergence and study validity only");
+    if (!refuse_unless_one_process("study " + study + " --scene")) return 2;
+    std::set<std::string> valued = {"scene", "out", "eps", "tolerance", "threads"};
+    if (study == "validity") valued.insert("bisection-steps");
+    const Args args(argv, valued, {"quiet"});
+    const std::string scene = args.text("scene", "");
+    if (scene.empty()) throw std::invalid_argument("--scene needs a file");
+    out_dir = args.text("out", "");
+    options.validity = study == "validity";
+    options.verbose = !args.has("quiet");
+    options.tolerance = args.number("tolerance", options.tolerance);
+    if (!(options.tolerance > 0) || !(options.tolerance < 1)) throw std::invalid_argument("--tolerance must be in (0, 1)");
+    options.threads = args.integer("threads", 2);
+    if (options.threads < 1 || options.threads > 64) throw std::invalid_argument("--threads must be in 1..64");
+    options.bisection_steps = args.integer("bisection-steps", 2);
+    if (options.bisection_steps < 0 || options.bisection_steps > 20)
+      throw std::invalid_argument("--bisection-steps must be in 0..20");
+    SceneSpec spec = read_scene_spec(scene);
+    if (args.has("eps")) {
+      spec.eps = parse_number_list("eps", args.text("eps", ""));
+      for (double e : spec.eps)
+        if (!(e > 0) || std::isinf(e)) throw std::invalid_argument("--eps: thicknesses must be finite and > 0");
+      if (spec.eps.size() < 3) throw std::invalid_argument("--eps: the convergence study needs at least 3 thicknesses");
+    }
+    if (!spec.has_layer())
+      throw std::invalid_argument("scene '" + spec.name + "' gives a limit law only ('law'): it has no layer mode to study");
+    bulk = std::make_unique<SceneFileBulk>(std::move(spec));
+    double thickest = 0;
+    for (double e : bulk->spec().eps.empty() ? options.eps : bulk->spec().eps) thickest = std::max(thickest, e);
+    if (thickest > bulk->thickest_layer())
+      throw std::invalid_argument("eps " + plain(thickest) + " mm is too thick for the elements of body '" +
+                                  bulk->spec().interface.plus + "' along the interface: at most " +
+                                  plain(bulk->thickest_layer()) + " mm (half their depth there)");
+  } catch (const std::exception& e) {
+    return fail("study", e, 2);
+  }
+  try {
+    auto out = open_results(out_dir);
+    if (out_dir.empty()) std::printf("(no --out DIR: the results are printed, not saved)\n");
+    const SceneStudyResult r = run_scene_study(*bulk, options, out.get());
+    int failed = 0;
+    for (const Check& c : r.checks)
+      if (!c.pass) {
+        ++failed;
+        std::printf("FAIL %s: expected %s, got %s\n", c.id.c_str(), c.expected.c_str(), c.got.c_str());
+      }
+    std::printf("\n%zu checks: %zu passed, %d failed\n", r.checks.size(), r.checks.size() - failed, failed);
+    if (out) {
+      write_checks(*out, r.checks);
+      out->commit();
+      std::printf("wrote %s\n", out->path().c_str());
+    }
+    return failed == 0 ? 0 : 1;
+  } catch (const std::invalid_argument& e) {
+    return fail("study", e, 2);
+  } catch (const OutputError& e) {
+    return fail("study", e, 2);
+  } catch (const std::exception& e) {
+    return fail("study", e, 1);
+  }
+}
+
+}  // namespace thinlayer

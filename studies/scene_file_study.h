@@ -1,0 +1,79 @@
+#pragma once
+// S2 and S3 (SPEC §3) on a user's scene file (SPEC §5): the distance between the layer mode at
+// every ε of the scene's grid and the limit mode, its fitted rates, and the largest ε at which
+// the limit law stays within τ of the layer model (bisection on log ε between the samples).
+//
+// Quantities (relative discrete L² distances, studies/error_norms.h), globally only (a user's
+// geometry has no corners known in advance):
+//   u        the adherents' nodal displacements (every body of the scene; same nodes, same rows
+//            in both modes), scale U = the largest nodal |u| of the limit mode;
+//   jump_N,  [u]_N and [u]_T across the whole layer: from the adherents' pair of nodes at each
+//   jump_T   node of S, with the limit's normal; scale U;
+//   sigma_N, σ_N, σ_T on the plus body's face (S in limit mode, S+ in layer mode); scale the
+//   sigma_T  largest |σ| of the limit mode on S.
+// The scales matter where the limit field vanishes (a law that opens everywhere): there the
+// distance is relative to the problem's magnitude, not to zero.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/io/h5_writer.h"
+#include "studies/rate_fit.h"
+#include "studies/scene_file_scenes.h"
+#include "studies/table3_study.h"
+
+namespace thinlayer {
+
+struct SceneStudyOptions {
+  std::vector<double> eps = {1e-2, 5e-3, 1e-3, 5e-4, 1e-4};  // the scene's "eps" replaces it
+  double tolerance = 1e-10;   // the SPEC residual every scene is solved to
+  int threads = 2;            // layer scenes solved at once
+  bool verbose = true;
+  std::vector<double> taus = {0.01, 0.05};
+  int bisection_steps = 2;
+  bool validity = false;      // also S3
+};
+
+struct SceneSample {
+  double eps = 0;
+  std::map<std::string, double> e;  // quantity → distance to the limit mode
+  int status_diff = 0;              // S nodes whose combined status differs from the limit's
+  bool converged = false;
+  double residual = 0, time_s = 0;
+  int iterations = 0;
+  std::string id;
+};
+
+struct SceneValidityRow {
+  double tau = 0;
+  std::string status;  // found | at_least | below_range (as studies/validity_study.h)
+  double eps_max = 0, error_at_eps_max = 0, eps_beyond = 0;
+  int bisection_steps = 0;
+  bool converged = true;
+};
+
+struct SceneStudyResult {
+  std::string limit_id;
+  bool limit_converged = false;
+  double limit_residual = 0;
+  std::vector<SceneSample> samples;  // by decreasing ε
+  std::map<std::string, std::optional<PowerLawFit>> fit;
+  std::map<std::string, std::optional<FlooredPowerLawFit>> floor_fit;
+  std::optional<double> p_predicted;  // the Table 2 case with the scene's (γ, δ), if any
+  std::vector<SceneValidityRow> validity;
+  std::vector<Check> checks;
+};
+
+const std::vector<std::string>& scene_distance_quantities();
+
+// The distances of one layer record to the limit record.
+std::map<std::string, double> scene_distance(const SceneFileBulk& bulk, const SceneRecord& layer,
+                                             const SceneRecord& limit, int* status_diff = nullptr);
+
+// Runs S2 (and S3 if options.validity), prints its tables, writes /studies/scene/<name>/ and
+// every scene it solved under /scenes when `out` is given. Checks (ids "scene.<name>.*"): the
+// limit and every layer scene converged; the distance u decreases as ε decreases.
+SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& options, H5Writer* out);
+
+}  // namespace thinlayer

@@ -1,0 +1,238 @@
+// Scene files (SPEC §5): the JSON schema's positions, and a closed-form scene. The closed form:
+// a rectangle cut by a straight bondline at 21.8° to the x axis, both halves in one uniform
+// stress state (u = G x + c on each side, the same G), so the interface carries the constant
+// traction σn and the limit law (case d, sticking) makes the displacement jump exactly
+// [u]_N = −σ_N/K_N, [u]_T = −σ_T/K_T. Everything expected here is computed by hand below from
+// G, λ, μ and the bondline's angle, not by the code under test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cases/scene/json_positions.h"
+#include "cases/scene/scene_spec.h"
+#include "studies/scene_file_scenes.h"
+
+namespace fs = std::filesystem;
+using namespace thinlayer;
+
+namespace {
+
+std::string expect_input_error(const std::string& text) {
+  try {
+    parse_positioned_json(text, "s.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string spec_error(const std::string& text) {
+  try {
+    scene_spec_from_json(parse_positioned_json(text, "s.json"), ".");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// A temporary folder removed at the end of the test.
+struct Folder {
+  fs::path path;
+  Folder() {
+    path = fs::temp_directory_path() / ("thinlayer-scene-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(path);
+  }
+  ~Folder() { fs::remove_all(path); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path / name) << text;
+    return (path / name).string();
+  }
+};
+
+std::string num(double x) {
+  char s[40];
+  std::snprintf(s, sizeof s, "%.17g", x);
+  return s;
+}
+
+// The closed form's data. Plane strain, mm and daN.
+struct ClosedForm {
+  double W = 10, H = 10, y0 = 3, y1 = 7;  // bondline from (0, y0) to (W, y1)
+  double lambda = 4500, mu = 5400;        // both bodies
+  double lambda_g = 2000, mu_g = 1000;    // glue; limit law (d): λ̄ = λ_g, μ̄ = μ_g (γ = δ = 1)
+  double e = -1e-3, a = 2e-4;             // u = (a y, e y) + c: ε_xx = 0, ε_yy = e, 2ε_xy = a
+  double s() const { return (y1 - y0) / std::hypot(W, y1 - y0); }
+  double c() const { return W / std::hypot(W, y1 - y0); }
+  Eigen::Vector2d n() const { return {-s(), c()}; }  // from the lower (minus) body into the upper (plus)
+  Eigen::Vector2d t() const { return {c(), s()}; }   // n turned clockwise
+  Eigen::Matrix2d sigma() const {
+    Eigen::Matrix2d S;
+    S << lambda * e, mu * a, mu * a, (lambda + 2 * mu) * e;
+    return S;
+  }
+  double sigma_N() const { return n().dot(sigma() * n()); }
+  // The minus side pushes the plus body with −σ_N n + σ_T t = σ(−n), the traction on its face.
+  double sigma_T() const { return -t().dot(sigma() * n()); }
+  double K_N() const { return lambda_g + 2 * mu_g; }
+  double K_T() const { return mu_g; }
+  double jump_N() const { return -sigma_N() / K_N(); }  // [u]_N > 0: interpenetration under compression
+  double jump_T() const { return -sigma_T() / K_T(); }
+  Eigen::Vector2d Delta() const { return -jump_N() * n() + jump_T() * t(); }  // u⁺ − u⁻
+  Eigen::Vector2d top_u() const { return Eigen::Vector2d(a * H, e * H) + Delta(); }
+
+  std::string geo() const {
+    return "Point(1) = {0, 0, 0, 1};\nPoint(2) = {" + num(W) + ", 0, 0, 1};\nPoint(3) = {" + num(W) + ", " + num(y1) +
+           ", 0, 1};\nPoint(4) = {0, " + num(y0) + ", 0, 1};\nPoint(5) = {" + num(W) + ", " + num(H) +
+           ", 0, 1};\nPoint(6) = {0, " + num(H) + ", 0, 1};\n"
+           "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {4, 3}; Line(4) = {4, 1};\n"
+           "Line(5) = {3, 5}; Line(6) = {5, 6}; Line(7) = {6, 4};\n"
+           "Curve Loop(1) = {1, 2, -3, 4}; Plane Surface(1) = {1};\n"
+           "Curve Loop(2) = {3, 5, 6, 7}; Plane Surface(2) = {2};\n"
+           "Physical Surface(\"lower\") = {1};\nPhysical Surface(\"upper\") = {2};\n"
+           "Physical Curve(\"bond\") = {3};\nPhysical Curve(\"bottom\") = {1};\nPhysical Curve(\"top\") = {6};\n"
+           "Physical Curve(\"left\") = {4, 7};\nPhysical Curve(\"right\") = {2, 5};\n";
+  }
+  // The sides carry σ n_out: (−σ_xx, −σ_xy) on x = 0, (σ_xx, σ_xy) on x = W.
+  std::string json(bool plus_supported = true) const {
+    const Eigen::Matrix2d S = sigma();
+    std::string supports = "[{\"group\": \"bottom\", \"u\": [0, 0]}";
+    std::string loads = "[{\"group\": \"left\", \"traction\": [" + num(-S(0, 0)) + ", " + num(-S(0, 1)) + "]}, " +
+                        "{\"group\": \"right\", \"traction\": [" + num(S(0, 0)) + ", " + num(S(0, 1)) + "]}";
+    if (plus_supported)
+      supports += ", {\"group\": \"top\", \"u\": [" + num(top_u().x()) + ", " + num(top_u().y()) + "]}";
+    else  // held by its contact alone: the top carries σ (0, 1)
+      loads += ", {\"group\": \"top\", \"traction\": [" + num(S(0, 1)) + ", " + num(S(1, 1)) + "]}";
+    return "{\"name\": \"closed-form\", \"geometry\": \"cf.geo\", \"mesh_size\": {\"interface\": 1, \"far\": 2},\n"
+           " \"bodies\": {\"lower\": {\"group\": \"lower\", \"lambda\": " + num(lambda) + ", \"mu\": " + num(mu) + "},\n"
+           "            \"upper\": {\"group\": \"upper\", \"lambda\": " + num(lambda) + ", \"mu\": " + num(mu) + "}},\n"
+           " \"interface\": {\"group\": \"bond\", \"plus\": \"upper\", \"minus\": \"lower\", \"friction\": 1,\n"
+           "   \"layer\": {\"gamma\": 1, \"delta\": 1, \"lambda_g\": " + num(lambda_g) + ", \"mu_g\": " + num(mu_g) + "}},\n"
+           " \"supports\": " + supports + "],\n \"loads\": " + loads + "]}\n";
+  }
+};
+
+// Largest deviation of the jumps across the whole interface (from the adherents' node pairs,
+// so across the layer in layer mode) from the closed form, relative to |[u]|.
+double jump_error(const SceneFileBulk& bulk, const SceneRecord& r, const ClosedForm& cf) {
+  const int lower_nodes = bulk.meshes().bodies[0].num_nodes();
+  const SceneInterfaceNodes& S = bulk.interface_nodes();
+  double worst = 0;
+  for (size_t k = 0; k < S.plus.size(); ++k) {
+    const Eigen::Vector2d d = r.u.row(lower_nodes + S.plus[k]).transpose() - r.u.row(S.minus[k]).transpose();  // u⁺ − u⁻
+    worst = std::max(worst, (d - cf.Delta()).norm() / cf.Delta().norm());
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(SceneJson, SyntaxErrorNamesLineAndColumn) {
+  const std::string m = expect_input_error("{\n  \"name\": \"x\",\n  \"bodies\": {,}\n}\n");
+  EXPECT_EQ(m.rfind("s.json:3:14: syntax error", 0), 0u) << m;
+}
+
+TEST(SceneJson, DuplicateKeyRefused) {
+  const std::string m = expect_input_error("{\"a\": 1,\n \"a\": 2}");
+  EXPECT_EQ(m, "s.json:2:2: key 'a' given twice");
+}
+
+TEST(SceneJson, PositionsOfKeysAndArrayElements) {
+  const PositionedJson j = parse_positioned_json("{\"a\": [1,\n  {\"b\": 2}], \"c\" : null}", "x");
+  EXPECT_EQ(j.at("/a").line, 1);
+  EXPECT_EQ(j.at("/a").column, 2);
+  EXPECT_EQ(j.at("/a/1").line, 2);
+  EXPECT_EQ(j.at("/a/1").column, 3);
+  EXPECT_EQ(j.at("/a/1/b").column, 4);
+  EXPECT_EQ(j.at("/c").line, 2);
+  EXPECT_EQ(j.at("/c").column, 14);
+}
+
+TEST(SceneSpec, UnknownKeyNamedWithItsPosition) {
+  const std::string m = spec_error("{\"name\": \"x\",\n \"frction\": 1}");
+  EXPECT_EQ(m.rfind("s.json:2:2: unknown key 'frction' in the scene", 0), 0u) << m;
+}
+
+TEST(SceneSpec, WrongTypeNamedWithItsPosition) {
+  const std::string m = spec_error("{\"name\": 3}");
+  EXPECT_EQ(m, "s.json:1:2: 'name' in the scene must be a string, not a number");
+}
+
+TEST(SceneSpec, MissingKeyNamedAtItsObject) {
+  Folder f;
+  f.write("g.geo", "Point(1) = {0,0,0,1};");
+  const std::string text =
+      "{\"name\": \"x\", \"geometry\": \"g.geo\",\n \"bodies\": {\"a\": {\"mu\": 1, \"lambda\": 1}}}";
+  try {
+    scene_spec_from_json(parse_positioned_json(text, "s.json"), f.path.string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "s.json:2:13: body 'a' has no 'group'");
+  }
+}
+
+TEST(SceneClosedForm, LimitModeJumpsAreSigmaOverKToRoundOff) {
+  const ClosedForm cf;
+  ASSERT_LT(cf.sigma_N(), 0);                                // in contact
+  ASSERT_LT(std::abs(cf.sigma_T()), std::abs(cf.sigma_N()));  // sticking (f = 1)
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
+  ASSERT_TRUE(s.report.converged) << s.report.message;
+  const double error = jump_error(bulk, s.record, cf);
+  std::printf("closed form, limit mode: max relative jump error %.3e (|[u]| = %.4e mm)\n", error, cf.Delta().norm());
+  EXPECT_LT(error, 1e-9);
+  const InterfaceFields& S = s.record.interfaces.at(0);
+  for (Eigen::Index k = 0; k < S.sigma_N.size(); ++k) {
+    EXPECT_NEAR(S.sigma_N[k], cf.sigma_N(), 1e-9 * std::abs(cf.sigma_N()));
+    EXPECT_NEAR(S.sigma_T[k], cf.sigma_T(), 1e-9 * std::abs(cf.sigma_N()));
+    EXPECT_NEAR(S.jump_N[k], cf.jump_N(), 1e-9 * cf.Delta().norm());
+    EXPECT_NEAR(S.jump_T[k], cf.jump_T(), 1e-9 * cf.Delta().norm());
+    EXPECT_EQ(S.status[k], 2);  // stick
+  }
+}
+
+TEST(SceneClosedForm, BodyHeldByContactAloneLimitMode) {
+  const ClosedForm cf;
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json(/*plus_supported=*/false))));
+  ASSERT_TRUE(bulk.model().bodies[1].floating);
+  const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
+  ASSERT_TRUE(s.report.converged) << s.report.message;
+  const double error = jump_error(bulk, s.record, cf);
+  std::printf("closed form, upper body held by contact alone: max relative jump error %.3e\n", error);
+  EXPECT_LT(error, 1e-8);
+}
+
+TEST(SceneClosedForm, LayerModeConvergesToTheJumps) {
+  const ClosedForm cf;
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  double previous = INFINITY;
+  for (double eps : {1e-1, 1e-2, 1e-3, 1e-4}) {
+    const SceneFileScene s = solve_scene_file_layer(bulk, eps, SolverKind::Fast, SolverOptions{});
+    ASSERT_TRUE(s.report.converged) << "eps " << eps << ": " << s.report.message;
+    const double error = jump_error(bulk, s.record, cf);
+    std::printf("closed form, layer mode at eps %g: max relative jump error %.3e\n", eps, error);
+    // First order in ε (studies/convergence_rates.md, case d): at least a factor 5 per decade.
+    EXPECT_LT(error, previous / 5) << "eps " << eps;
+    previous = error;
+  }
+}
+
+TEST(SceneClosedForm, TooThickALayerIsRefused) {
+  const ClosedForm cf;
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  ASSERT_GT(bulk.thickest_layer(), 0);
+  EXPECT_THROW(solve_scene_file_layer(bulk, 1.01 * bulk.thickest_layer(), SolverKind::Fast, SolverOptions{}),
+               std::invalid_argument);
+}
