@@ -34,6 +34,7 @@ import section_bar_profiles  # noqa: E402
 import section_convergence  # noqa: E402
 import section_header  # noqa: E402
 import section_layer_stiffness  # noqa: E402
+import section_scene_files  # noqa: E402
 import section_table3  # noqa: E402
 import section_tables12  # noqa: E402
 import section_stress  # noqa: E402
@@ -65,6 +66,7 @@ SECTIONS = (
     ("validity", "Validity", section_validity.render),
     ("timing", "Run time", section_timing.render),
     ("stress", "Stress tests", section_stress.render),
+    ("scenes", "Your own joint", section_scene_files.render),
 )
 
 

@@ -362,6 +362,15 @@ SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& o
                       sci(r.samples.front().e.at("u"), 2) + " at eps " + plain(r.samples.front().eps) + " ... " +
                           sci(r.samples.back().e.at("u"), 2) + " at eps " + plain(r.samples.back().eps),
                       "0"});
+  // As the dovetail's S2 check: the floored rate of u against the asymptotics' prediction for
+  // the scene's (γ, δ), where the prediction exists (studies/convergence_rates.md).
+  if (r.p_predicted) {
+    const auto& f = r.floor_fit.at("u");
+    const bool pass = f && std::abs(f->p - *r.p_predicted) <= options.rate_tolerance;
+    r.checks.push_back({id + ".rate", pass,
+                        "p(u, floored fit) = " + plain(*r.p_predicted) + " +- " + plain(options.rate_tolerance),
+                        rate_text(f), plain(options.rate_tolerance)});
+  }
   if (out) {
     write_study(*out, bulk, r, options);
     std::set<std::string> written;  // two brackets may bisect at the same ε

@@ -33,6 +33,7 @@ struct SceneStudyOptions {
   std::vector<double> taus = {0.01, 0.05};
   int bisection_steps = 2;
   bool validity = false;      // also S3
+  double rate_tolerance = 0.15;  // |p_fit − p_predicted| allowed, as the dovetail's S2 check
 };
 
 struct SceneSample {
@@ -73,7 +74,9 @@ std::map<std::string, double> scene_distance(const SceneFileBulk& bulk, const Sc
 
 // Runs S2 (and S3 if options.validity), prints its tables, writes /studies/scene/<name>/ and
 // every scene it solved under /scenes when `out` is given. Checks (ids "scene.<name>.*"): the
-// limit and every layer scene converged; the distance u decreases as ε decreases.
+// limit and every layer scene converged; the distance u decreases as ε decreases; where the
+// asymptotics predict a rate for the scene's (γ, δ), the floored rate of u within
+// rate_tolerance of it.
 SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& options, H5Writer* out);
 
 }  // namespace thinlayer

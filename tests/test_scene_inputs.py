@@ -16,7 +16,7 @@ import tempfile
 
 import h5py
 
-THINLAYER = sys.argv[1]
+THINLAYER = os.path.abspath(sys.argv[1])
 LAP = os.path.abspath(sys.argv[2])
 failures = []
 passed = 0
