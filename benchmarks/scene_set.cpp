@@ -17,13 +17,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <sstream>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "benchmarks/bonded_solve.h"
 #include "cases/dovetail/dovetail.h"
+#include "core/io/output_target.h"
 #include "core/io/reference_tables.h"
 #include "studies/bar_scenes.h"
 #include "studies/dovetail_scenes.h"
@@ -146,9 +147,8 @@ int run(int argc, char** argv) {
       return 2;
     }
   }
-  std::ofstream out;
+  std::ostringstream out;  // the CSV, written atomically at the end (core/io/output_target.h)
   if (!csv.empty()) {
-    out.open(csv);
     out << "scene,steps,residual,layer_residual,solve_s,setup_s,stop_cause,combined_gap_slide_stick,expected,bonded_s\n";
   }
   std::printf("%-34s %6s %10s %10s %8s %8s  %-16s %s\n", "scene", "steps", "residual", "layer", "solve_s", "setup_s",
@@ -173,11 +173,12 @@ int run(int argc, char** argv) {
                 row.layer_residual, row.solve_s, row.setup_s, row.stop_cause.c_str(), row.counts.c_str(), ratio.c_str(),
                 flag.c_str());
     std::fflush(stdout);
-    if (out) out << scene.id << "," << row.steps << "," << row.residual << "," << row.layer_residual << ","
+    if (!csv.empty()) out << scene.id << "," << row.steps << "," << row.residual << "," << row.layer_residual << ","
                  << row.solve_s << "," << row.setup_s << "," << row.stop_cause << "," << row.counts << ","
                  << scene.expected << "," << row.bonded_s << "\n";
   }
   std::printf("%d of %d scenes ended as expected\n", total - failures, total);
+  if (!csv.empty()) write_text_atomically(csv, out.str());
   return failures ? 1 : 0;
 }
 
