@@ -187,15 +187,51 @@ SideMap cell_sides(const Mesh& mesh) {
   return sides;
 }
 
-// The curve's nodes (its end points included) by increasing curve parameter.
+std::vector<std::array<std::size_t, 2>> curve_segments(int curve);
+
+// The curve's nodes (its end points included) in the order of its segments: from the end
+// where its first segment starts, each next node the other end of the segment not yet
+// walked. For a mesh read from a .msh file, which carries no parametric coordinates unless
+// written with Mesh.SaveParametric, the segments are all there is to go by.
+std::vector<std::size_t> curve_nodes_by_segments(int curve) {
+  const auto segments = curve_segments(curve);
+  std::map<std::size_t, std::vector<std::size_t>> next;
+  for (const auto& [a, b] : segments) {
+    next[a].push_back(b);
+    next[b].push_back(a);
+  }
+  if (segments.empty()) return {};
+  std::size_t start = segments.front()[0];
+  for (const auto& [a, b] : segments)  // an open curve starts at the end whose segment leaves it
+    if (next[a].size() == 1) {
+      start = a;
+      break;
+    }
+  std::vector<std::size_t> order = {start};
+  std::set<std::size_t> seen = {start};
+  while (true) {
+    bool moved = false;
+    for (std::size_t n : next[order.back()])
+      if (seen.insert(n).second) {
+        order.push_back(n);
+        moved = true;
+        break;
+      }
+    if (!moved) break;
+  }
+  if (order.size() != next.size())
+    throw std::runtime_error("gmsh curve " + std::to_string(curve) + " has segments that do not form one chain");
+  return order;
+}
+
+// The curve's nodes (its end points included) by increasing curve parameter, or in the order
+// of its segments where the mesh has no parametric coordinates (read from a .msh file).
 std::vector<std::size_t> curve_nodes_along(int curve) {
   std::vector<std::size_t> tags;
   std::vector<double> xyz, u;
   gmsh::model::mesh::getNodes(tags, xyz, u, 1, curve, /*includeBoundary=*/true,
                               /*returnParametricCoord=*/true);
-  if (u.size() != tags.size())
-    throw std::runtime_error("gmsh curve " + std::to_string(curve) +
-                             " has no parametric coordinates for its nodes");
+  if (u.size() != tags.size()) return curve_nodes_by_segments(curve);
   std::vector<std::size_t> order(tags.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),

@@ -82,7 +82,8 @@ std::vector<NamedBoundary> named_physical_groups();
 // Named sets, for each entry of `boundaries`:
 //  - points: node set of the points' nodes, in the listed order;
 //  - curves: node set of the curves' nodes, each curve's nodes sorted by increasing curve
-//    parameter (i.e. following the curve's orientation in gmsh), curves taken in the listed
+//    parameter (i.e. following the curve's orientation in gmsh; for a mesh read from a .msh
+//    without parametric coordinates, following its segments), curves taken in the listed
 //    order, nodes shared by consecutive curves kept once; so list the curves head to tail to
 //    get a node set sorted along the boundary. Edge set: the curves' mesh segments in gmsh's
 //    order along each curve, each as (a, b) with the body on the left, which is the
