@@ -19,8 +19,8 @@
 #include "core/solvers/fast_solver.h"
 #include "core/solvers/relaxation_solver.h"
 #include "core/solvers/siconos_peers.h"
-#include "studies/bar_scenes.h"
-#include "studies/dovetail_scenes.h"
+#include "cases/bar/bar_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
 
 namespace thinlayer {
 namespace {

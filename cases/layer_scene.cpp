@@ -1,4 +1,4 @@
-#include "studies/layer_scene.h"
+#include "cases/layer_scene.h"
 
 namespace thinlayer {
 

@@ -7,7 +7,7 @@
 #include "core/mesh/layer_band.h"
 #include "core/mesh/structured_rectangle.h"
 #include "core/solvers/fast_solver.h"
-#include "studies/dovetail_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
 
 namespace thinlayer {
 namespace {

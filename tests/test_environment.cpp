@@ -10,7 +10,7 @@
 
 #include "core/io/h5_reader.h"
 #include "core/io/h5_writer.h"
-#include "studies/environment.h"
+#include "studies/cli/environment.h"
 
 namespace thinlayer {
 namespace {

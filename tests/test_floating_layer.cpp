@@ -6,8 +6,8 @@
 #include "cases/dovetail/dovetail.h"
 #include "core/io/reference_tables.h"
 #include "core/solvers/fast_solver.h"
-#include "studies/bar_scenes.h"
-#include "studies/dovetail_scenes.h"
+#include "cases/bar/bar_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
 
 namespace thinlayer {
 namespace {

@@ -233,6 +233,24 @@ def write_stress(f):
     g["condition_estimate"], g["time_s"], g["finite"] = np.array([400.0, 1e18]), np.array([0.02, 7.0]), np.array([1, 0])
 
 
+def write_scene_study(f):
+    """S2 and S3 on a scene file (verify's lap joint, SPEC §5): /studies/scene/<name>."""
+    g = f.create_group("studies/scene/lap-joint")
+    eps = np.array([0.1, 0.01, 0.001, 0.0001])
+    g["eps"] = eps
+    for q in ("u", "jump_N", "jump_T", "sigma_N", "sigma_T"):
+        g["e_" + q] = 0.03 * eps / 0.1
+        g.attrs["p_" + q], g.attrs["p_" + q + "_stderr"], g.attrs["fitted_" + q] = 1.0, 0.01, 1
+        g.attrs["p_floor_" + q], g.attrs["floor_" + q], g.attrs["fitted_floor_" + q] = 1.0, 0.0, 1
+    g["status_diff"], g["converged"] = np.array([0, 0, 1, 1]), np.array([1, 1, 1, 1])
+    g.create_dataset("layer_scene", data=strings([f"lap-joint-layer-eps{e:g}-fast" for e in eps]), dtype=STR)
+    g.attrs["scene_file"], g.attrs["table1_case"], g.attrs["p_predicted"] = "lap_joint.json", "d", 1.0
+    v = g.create_group("validity")
+    v["tau"], v["eps_max"], v["error_at_eps_max"] = np.array([0.01, 0.05]), np.array([0.0316, 0.1]), np.array([0.0095, 0.03])
+    v["eps_beyond"], v["bisection_steps"], v["converged"] = np.array([0.0562, 0.0]), np.array([2, 0]), np.array([1, 1])
+    v.create_dataset("status", data=strings(["found", "at_least"]), dtype=STR)
+
+
 def write_checks(f, checks):
     g = f.create_group("checks")
     g.create_dataset("id", data=strings([c[0] for c in checks]), dtype=STR)
@@ -278,6 +296,7 @@ def write_results(path, layout=True, failing=False, complete=True, version=2):
         write_timing(f)
         write_timing_extras(f)
         write_stress(f)
+        write_scene_study(f)
 
 
 # --- The tests -----------------------------------------------------------------------------
@@ -342,6 +361,9 @@ class ReportTest(unittest.TestCase):
         self.assertNotRegex(html, r'<tr class="failrow">(<td[^>]*>[^<]*</td>){1}<td class="l">bar limit, f = 1<')
         self.assertIn("Targets of issue 5", html)
         self.assertIn("factorisation_reuse_table3", html)
+        # The scene-file study: its validity table, a bisected and a lower-bound row.
+        self.assertIn("<b>0.0316</b>", html)
+        self.assertIn("<b>≥ 0.1</b>", html)
         self.assertNothingLeftBehind()
 
     def test_without_layout_attributes_the_file_is_called_foreign(self):

@@ -1,4 +1,4 @@
-// SceneBatch (studies/scene_batch.h): every result in place and in order, whatever the ranks and
+// SceneBatch (studies/parallel/scene_batch.h): every result in place and in order, whatever the ranks and
 // threads; a scene that throws is named; the longest-first assignment; results survive the
 // trip through bytes bit for bit. CTest runs this file as one process and, under mpirun, as
 // two ranks (scene_batch_two_ranks), where the same assertions hold on every rank.
@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "studies/process_group.h"
-#include "studies/result_bytes.h"
-#include "studies/scene_batch.h"
+#include "studies/parallel/process_group.h"
+#include "studies/parallel/result_bytes.h"
+#include "studies/parallel/scene_batch.h"
 
 namespace thinlayer {
 namespace {

@@ -4,6 +4,7 @@
 // traction σn and the limit law (case d, sticking) makes the displacement jump exactly
 // [u]_N = −σ_N/K_N, [u]_T = −σ_T/K_T. Everything expected here is computed by hand below from
 // G, λ, μ and the bondline's angle, not by the code under test.
+#include <gmsh.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +15,8 @@
 
 #include "cases/scene/json_positions.h"
 #include "cases/scene/scene_spec.h"
-#include "studies/scene_file_scenes.h"
+#include "cases/scene/scene_file_scenes.h"
+#include "core/mesh/gmsh_session.h"
 
 namespace fs = std::filesystem;
 using namespace thinlayer;
@@ -235,4 +237,53 @@ TEST(SceneClosedForm, TooThickALayerIsRefused) {
   ASSERT_GT(bulk.thickest_layer(), 0);
   EXPECT_THROW(solve_scene_file_layer(bulk, 1.01 * bulk.thickest_layer(), SolverKind::Fast, SolverOptions{}),
                std::invalid_argument);
+}
+
+// A .msh 4.1 is used as is: the closed form meshed once by gmsh (its own sizes), written, and
+// read back through "mesh" gives the exact jumps too.
+TEST(SceneClosedForm, MeshFileUsedAsIs) {
+  const ClosedForm cf;
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  {
+    GmshModelScope scope("write-msh");
+    with_gmsh_errors([&] {
+      gmsh::open((f.path / "cf.geo").string());
+      gmsh::option::setNumber("Mesh.RecombineAll", 1);
+      gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 2);
+      gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+      gmsh::model::mesh::generate(2);
+      gmsh::write((f.path / "cf.msh").string());
+      gmsh::option::setNumber("Mesh.RecombineAll", 0);
+      gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);
+    });
+  }
+  std::string json = cf.json();
+  json.replace(json.find("\"geometry\": \"cf.geo\", \"mesh_size\": {\"interface\": 1, \"far\": 2}"),
+               std::string("\"geometry\": \"cf.geo\", \"mesh_size\": {\"interface\": 1, \"far\": 2}").size(),
+               "\"mesh\": \"cf.msh\"");
+  SceneFileBulk bulk(read_scene_spec(f.write("msh.json", json)));
+  EXPECT_GT(bulk.meshes().bodies[0].num_nodes(), 4);
+  const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
+  ASSERT_TRUE(s.report.converged) << s.report.message;
+  EXPECT_LT(jump_error(bulk, s.record, cf), 1e-9);
+}
+
+// The upper body held by contact alone, in layer mode: two floating bodies (the upper one and
+// the layer) stacked on the supported lower one.
+TEST(SceneClosedForm, BodyHeldByContactAloneLayerMode) {
+  const ClosedForm cf;
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json(/*plus_supported=*/false))));
+  double previous = INFINITY;
+  for (double eps : {1e-1, 1e-2, 1e-3}) {
+    const SceneFileScene s = solve_scene_file_layer(bulk, eps, SolverKind::Fast, SolverOptions{});
+    ASSERT_TRUE(s.report.converged) << "eps " << eps << ": " << s.report.message;
+    const double error = jump_error(bulk, s.record, cf);
+    std::printf("closed form, upper body held by contact alone, layer mode at eps %g: max relative jump error %.3e\n",
+                eps, error);
+    EXPECT_LT(error, previous / 5) << "eps " << eps;
+    previous = error;
+  }
 }

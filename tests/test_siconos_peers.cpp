@@ -13,7 +13,7 @@
 #include "core/io/scene_record.h"
 #include "core/solvers/fast_solver.h"
 #include "core/solvers/siconos_peers.h"
-#include "studies/bar_scenes.h"
+#include "cases/bar/bar_scenes.h"
 
 namespace thinlayer {
 namespace {

@@ -12,7 +12,7 @@
 #include "core/io/scene_record.h"
 #include "core/solvers/fast_solver.h"
 #include "core/solvers/relaxation_solver.h"
-#include "studies/dovetail_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
 
 namespace thinlayer {
 namespace {

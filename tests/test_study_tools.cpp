@@ -5,12 +5,12 @@
 #include <cmath>
 #include <random>
 
-#include "studies/bisection.h"
-#include "studies/convergence_study.h"
-#include "studies/error_norms.h"
-#include "studies/mode_distance.h"
-#include "studies/rate_fit.h"
-#include "studies/scene_cache.h"
+#include "studies/tools/bisection.h"
+#include "studies/drivers/convergence_study.h"
+#include "studies/tools/error_norms.h"
+#include "studies/tools/mode_distance.h"
+#include "studies/tools/rate_fit.h"
+#include "studies/tools/scene_cache.h"
 
 namespace thinlayer {
 namespace {

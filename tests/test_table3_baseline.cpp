@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/io/reference_tables.h"
-#include "studies/bar_scenes.h"
+#include "cases/bar/bar_scenes.h"
 
 namespace thinlayer {
 namespace {

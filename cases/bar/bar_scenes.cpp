@@ -1,4 +1,4 @@
-#include "studies/bar_scenes.h"
+#include "cases/bar/bar_scenes.h"
 
 #include <cmath>
 #include <sstream>
@@ -21,17 +21,9 @@ const CondensedInterface& BarBulk::condensed() {
   return *condensed_;
 }
 
-SolverKind parse_solver(const std::string& name) {
-  if (name == "fast") return SolverKind::Fast;
-  if (name == "relaxation") return SolverKind::Relaxation;
-  throw std::invalid_argument("unknown solver '" + name + "' (expected fast or relaxation)");
-}
-
 InterfaceLaw table3_law(const Table3Row& row, double friction) {
   return InterfaceLaw::make(row.lambda_bar, row.mu_bar, friction);
 }
-
-const char* to_string(SolverKind s) { return s == SolverKind::Fast ? "fast" : "relaxation"; }
 
 std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_case, SolverKind solver) {
   std::ostringstream id;
@@ -42,13 +34,6 @@ std::string bar_scene_id(const bar::MeshOptions& mesh, const std::string& law_ca
   if (mesh.load_scale != 1) id << "-load" << mesh.load_scale;
   id << "-" << to_string(solver);
   return id.str();
-}
-
-SolveReport run_solver(const ContactProblem& problem, const CondensedInterface* condensed, SolverKind solver,
-                       const SolverOptions& options) {
-  if (solver == SolverKind::Relaxation) return solve_relaxation(problem, options);
-  if (condensed) return solve_fast(problem, *condensed, options);
-  return solve_fast(problem, options);
 }
 
 namespace {

@@ -9,14 +9,12 @@
 #include "core/io/reference_tables.h"
 #include "core/io/scene_record.h"
 #include "core/mesh/layer_band.h"
-#include "studies/layer_scene.h"
+#include "cases/layer_scene.h"
 #include "core/solvers/condensed_interface.h"
 #include "core/solvers/solve_report.h"
+#include "core/solvers/solver_choice.h"
 
 namespace thinlayer {
-
-// Relative tolerance of the gap/slide/stick classification (SPEC §1.2), reported with results.
-constexpr double default_status_tolerance = 1e-6;
 
 // The bar's bulk for one mesh: model, assembled system, and (built on first use) the
 // factorisation condensed onto AD, shared by every law solved on this mesh.
@@ -37,10 +35,6 @@ class BarBulk {
 
 // The interface law of a Table 3 row: its (λ̄, μ̄) with friction f (the bar's f = 1 by default).
 InterfaceLaw table3_law(const Table3Row& row, double friction = bar::friction);
-
-enum class SolverKind { Fast, Relaxation };
-SolverKind parse_solver(const std::string& name);  // "fast" | "relaxation", else throws
-const char* to_string(SolverKind s);
 
 struct BarScene {
   SceneRecord record;
@@ -67,10 +61,6 @@ struct BarLayerScene {
 BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, double mu_bar, double eps,
                               const std::string& law_case, SolverKind solver, const SolverOptions& options,
                               double status_tolerance = default_status_tolerance, int layer_elements = 2);
-
-// Runs the chosen solver; the fast one reuses `condensed` when given.
-SolveReport run_solver(const ContactProblem& problem, const CondensedInterface* condensed, SolverKind solver,
-                       const SolverOptions& options);
 
 
 }  // namespace thinlayer

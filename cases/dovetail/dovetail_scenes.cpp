@@ -1,6 +1,5 @@
-#include "studies/dovetail_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
 
-#include "studies/stopwatch.h"
 
 #include <chrono>
 #include <cmath>
@@ -9,6 +8,11 @@
 namespace thinlayer {
 
 namespace {
+
+// Wall time since `start`, s (the studies' stopwatch lives above the cases).
+double elapsed_s(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 void add_dovetail_attributes(SceneRecord& r, const std::string& mode, const std::string& law_case,
                              const dovetail::Exponents& e, double eps, const DovetailLimitBulk& bulk) {
@@ -52,7 +56,7 @@ DovetailLimitBulk::DovetailLimitBulk(const dovetail::MeshOptions& options, doubl
   dovetail::limit_law({}, friction_);  // throws on a friction that no law accepts, before any meshing
   const auto start = std::chrono::steady_clock::now();
   meshes_ = dovetail::make_limit_meshes(options);
-  meshing_time_s_ = seconds_since(start);
+  meshing_time_s_ = elapsed_s(start);
   model_ = dovetail::make_limit_model(meshes_);
   system_ = std::make_unique<LinearSystem>(model_);
 }
@@ -92,7 +96,7 @@ DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail
   DovetailScene scene;
   auto start = std::chrono::steady_clock::now();
   const dovetail::LayerMeshes meshes = dovetail::make_layer_meshes(bulk.meshes(), eps, bulk.options().layer_elements);
-  scene.meshing_time_s = seconds_since(start);
+  scene.meshing_time_s = elapsed_s(start);
   scene.layer_quality = mesh_quality(meshes.layer);
   const Model model = dovetail::make_layer_model(meshes, x);
   const LinearSystem system(model);

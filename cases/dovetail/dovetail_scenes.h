@@ -9,8 +9,8 @@
 #include "core/io/scene_record.h"
 #include "core/mesh/layer_band.h"
 #include "core/solvers/condensed_interface.h"
-#include "studies/bar_scenes.h"
-#include "studies/layer_scene.h"
+#include "core/solvers/solver_choice.h"
+#include "cases/layer_scene.h"
 
 namespace thinlayer {
 

@@ -1,14 +1,18 @@
-#include "studies/scene_file_scenes.h"
+#include "cases/scene/scene_file_scenes.h"
 
 #include <chrono>
 #include <cmath>
 #include <sstream>
 
-#include "studies/stopwatch.h"
 
 namespace thinlayer {
 
 namespace {
+
+// Wall time since `start`, s (the studies' stopwatch lives above the cases).
+double elapsed_s(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 void add_attributes(SceneRecord& r, const SceneSpec& spec, const std::string& mode, double eps, double meshing_time_s) {
   const InterfaceLaw law = spec.limit_law();
@@ -46,6 +50,21 @@ SceneFileBulk::SceneFileBulk(SceneSpec spec) : spec_(std::move(spec)) {
   system_ = std::make_unique<LinearSystem>(model_);
 }
 
+void check_layer_mode(const SceneFileBulk& bulk, double eps) {
+  const SceneSpec& spec = bulk.spec();
+  if (!spec.has_layer())
+    throw std::invalid_argument("scene '" + spec.name + "' gives a limit law only ('law'): it has no layer mode");
+  if (spec.element != ElementType::Q1)
+    throw std::invalid_argument("scene '" + spec.name + "' is P1: the layer mode needs \"element\": \"Q1\" (its band is Q1)");
+  if (!(eps > 0) || !std::isfinite(eps)) throw std::invalid_argument("eps must be finite and > 0");
+  if (eps > bulk.thickest_layer()) {
+    std::ostringstream s;
+    s << "eps " << eps << " mm is too thick for the elements of body '" << spec.interface.plus
+      << "' along the interface: at most " << bulk.thickest_layer() << " mm (half their depth there)";
+    throw std::invalid_argument(s.str());
+  }
+}
+
 const CondensedInterface& SceneFileBulk::condensed() {
   if (!condensed_) {
     const ContactProblem geometry(*system_, {make_scene_limit_interface(spec_, model_, S_, InterfaceLaw{})});
@@ -75,7 +94,7 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   const SceneSpec& spec = bulk.spec();
   const auto start = std::chrono::steady_clock::now();
   const SceneLayerModel layer = make_scene_layer_model(spec, bulk.meshes(), bulk.interface_nodes(), eps);
-  const double meshing = seconds_since(start);
+  const double meshing = elapsed_s(start);
   const LinearSystem system(layer.model);
   const ContactProblem problem(system, layer.interfaces);
   std::unique_ptr<CondensedInterface> condensed;

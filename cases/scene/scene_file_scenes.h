@@ -9,8 +9,8 @@
 #include "core/fem/linear_system.h"
 #include "core/io/scene_record.h"
 #include "core/solvers/condensed_interface.h"
-#include "studies/bar_scenes.h"
-#include "studies/layer_scene.h"
+#include "core/solvers/solver_choice.h"
+#include "cases/layer_scene.h"
 
 namespace thinlayer {
 
@@ -36,6 +36,10 @@ class SceneFileBulk {
   std::unique_ptr<LinearSystem> system_;
   std::unique_ptr<CondensedInterface> condensed_;
 };
+
+// Throws std::invalid_argument unless the scene has a layer mode at thickness `eps` (mm): a
+// "layer" (not a bare "law"), Q1 elements (the band is Q1), and eps ≤ thickest_layer().
+void check_layer_mode(const SceneFileBulk& bulk, double eps);
 
 struct SceneFileScene {
   SceneRecord record;

@@ -1,4 +1,4 @@
-#include "studies/args.h"
+#include "studies/cli/args.h"
 
 #include <cerrno>
 #include <cmath>

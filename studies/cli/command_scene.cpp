@@ -1,4 +1,4 @@
-#include "studies/command_scene.h"
+#include "studies/cli/command_scene.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,12 +9,12 @@
 
 #include "core/io/output_target.h"
 #include "core/io/vtu_writer.h"
-#include "studies/args.h"
-#include "studies/format.h"
-#include "studies/options.h"
-#include "studies/process_group.h"
-#include "studies/results_file.h"
-#include "studies/scene_file_study.h"
+#include "studies/cli/args.h"
+#include "studies/tools/format.h"
+#include "studies/cli/options.h"
+#include "studies/parallel/process_group.h"
+#include "studies/cli/results_file.h"
+#include "studies/drivers/scene_file_study.h"
 
 namespace thinlayer {
 
@@ -159,12 +159,7 @@ int command_solve_scene(const std::vector<std::string>& argv) {
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
     bulk = std::make_unique<SceneFileBulk>(read_scene_spec(in.scene));
-    if (in.mode == "layer" && !bulk->spec().has_layer())
-      throw std::invalid_argument("scene '" + bulk->spec().name + "' gives a limit law only ('law'): it has no layer mode");
-    if (in.mode == "layer" && in.eps > bulk->thickest_layer())
-      throw std::invalid_argument("--eps " + plain(in.eps) + " mm is too thick for the elements of body '" +
-                                  bulk->spec().interface.plus + "' along the interface: at most " +
-                                  plain(bulk->thickest_layer()) + " mm (half their depth there)");
+    if (in.mode == "layer") check_layer_mode(*bulk, in.eps);
   } catch (const std::invalid_argument& e) {
     return fail("solve", e, 2);
   } catch (const OutputError& e) {
@@ -228,12 +223,7 @@ int command_study_scene(const std::string& study, const std::vector<std::string>
     if (!spec.has_layer())
       throw std::invalid_argument("scene '" + spec.name + "' gives a limit law only ('law'): it has no layer mode to study");
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
-    double thickest = 0;
-    for (double e : bulk->spec().eps.empty() ? options.eps : bulk->spec().eps) thickest = std::max(thickest, e);
-    if (thickest > bulk->thickest_layer())
-      throw std::invalid_argument("eps " + plain(thickest) + " mm is too thick for the elements of body '" +
-                                  bulk->spec().interface.plus + "' along the interface: at most " +
-                                  plain(bulk->thickest_layer()) + " mm (half their depth there)");
+    for (double e : bulk->spec().eps.empty() ? options.eps : bulk->spec().eps) check_layer_mode(*bulk, e);
   } catch (const std::exception& e) {
     return fail("study", e, 2);
   }

@@ -1,4 +1,4 @@
-#include "studies/command_solve.h"
+#include "studies/cli/command_solve.h"
 
 #include <cmath>
 #include <cstdarg>
@@ -13,13 +13,13 @@
 #include "core/io/output_target.h"
 #include "core/io/reference_tables.h"
 #include "core/io/vtu_writer.h"
-#include "studies/args.h"
-#include "studies/bar_scenes.h"
-#include "studies/command_scene.h"
-#include "studies/dovetail_scenes.h"
-#include "studies/format.h"
-#include "studies/options.h"
-#include "studies/results_file.h"
+#include "studies/cli/args.h"
+#include "cases/bar/bar_scenes.h"
+#include "studies/cli/command_scene.h"
+#include "cases/dovetail/dovetail_scenes.h"
+#include "studies/tools/format.h"
+#include "studies/cli/options.h"
+#include "studies/cli/results_file.h"
 
 namespace thinlayer {
 

@@ -1,4 +1,4 @@
-#include "studies/environment.h"
+#include "studies/cli/environment.h"
 
 #include <array>
 #include <cstdio>

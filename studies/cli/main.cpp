@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "core/io/output_target.h"
-#include "studies/command_solve.h"
-#include "studies/command_study.h"
-#include "studies/environment.h"
-#include "studies/process_group.h"
-#include "studies/results_file.h"
+#include "studies/cli/command_solve.h"
+#include "studies/cli/command_study.h"
+#include "studies/cli/environment.h"
+#include "studies/parallel/process_group.h"
+#include "studies/cli/results_file.h"
 
 namespace {
 

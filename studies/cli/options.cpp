@@ -1,4 +1,4 @@
-#include "studies/options.h"
+#include "studies/cli/options.h"
 
 #include <cmath>
 #include <sstream>

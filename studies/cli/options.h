@@ -5,7 +5,7 @@
 
 #include "cases/bar/bar.h"
 #include "core/solvers/solve_report.h"
-#include "studies/args.h"
+#include "studies/cli/args.h"
 
 namespace thinlayer {
 

@@ -1,4 +1,4 @@
-#include "studies/report_runner.h"
+#include "studies/cli/report_runner.h"
 
 #include <spawn.h>
 #include <sys/wait.h>

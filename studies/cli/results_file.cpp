@@ -1,10 +1,10 @@
-#include "studies/results_file.h"
+#include "studies/cli/results_file.h"
 
 #include <filesystem>
 #include <stdexcept>
 
 #include "core/io/output_target.h"
-#include "studies/environment.h"
+#include "studies/cli/environment.h"
 
 namespace thinlayer {
 

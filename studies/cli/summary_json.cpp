@@ -1,4 +1,4 @@
-#include "studies/summary_json.h"
+#include "studies/cli/summary_json.h"
 
 #include <cmath>
 #include <cstdio>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/table3_study.h"
+#include "studies/drivers/table3_study.h"
 
 namespace thinlayer {
 

@@ -1,4 +1,4 @@
-#include "studies/convergence_study.h"
+#include "studies/drivers/convergence_study.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "core/io/reference_tables.h"
-#include "studies/format.h"
+#include "studies/tools/format.h"
 
 namespace thinlayer {
 

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "core/io/h5_writer.h"
-#include "studies/mode_distance.h"
-#include "studies/rate_fit.h"
-#include "studies/scene_cache.h"
-#include "studies/table3_study.h"
+#include "studies/tools/mode_distance.h"
+#include "studies/tools/rate_fit.h"
+#include "studies/tools/scene_cache.h"
+#include "studies/drivers/table3_study.h"
 
 namespace thinlayer {
 

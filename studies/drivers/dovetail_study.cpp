@@ -1,12 +1,12 @@
-#include "studies/dovetail_study.h"
+#include "studies/drivers/dovetail_study.h"
 
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
-#include "studies/dovetail_scenes.h"
-#include "studies/format.h"
-#include "studies/scene_batch.h"
+#include "cases/dovetail/dovetail_scenes.h"
+#include "studies/tools/format.h"
+#include "studies/parallel/scene_batch.h"
 
 namespace thinlayer {
 

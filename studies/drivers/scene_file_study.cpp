@@ -1,4 +1,4 @@
-#include "studies/scene_file_study.h"
+#include "studies/drivers/scene_file_study.h"
 
 #include <algorithm>
 #include <atomic>
@@ -12,9 +12,9 @@
 
 #include "core/io/column_table.h"
 #include "core/io/reference_tables.h"
-#include "studies/bisection.h"
-#include "studies/error_norms.h"
-#include "studies/format.h"
+#include "studies/tools/bisection.h"
+#include "studies/tools/error_norms.h"
+#include "studies/tools/format.h"
 
 namespace thinlayer {
 
@@ -307,10 +307,7 @@ SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& o
   std::vector<double> eps = spec.eps.empty() ? options.eps : spec.eps;
   std::sort(eps.rbegin(), eps.rend());
   if (eps.size() < 3) throw std::invalid_argument("the convergence study needs at least 3 thicknesses");
-  if (eps.front() > bulk.thickest_layer())
-    throw std::invalid_argument("eps " + plain(eps.front()) + " mm is too thick for the elements of body '" +
-                                spec.interface.plus + "' along the interface: at most " + plain(bulk.thickest_layer()) +
-                                " mm (half their depth there)");
+  for (double e : eps) check_layer_mode(bulk, e);
   SolverOptions solver;
   solver.tolerance = options.tolerance;
   const SceneFileScene limit = solve_scene_file_limit(bulk, SolverKind::Fast, solver);

@@ -3,7 +3,7 @@
 // every ε of the scene's grid and the limit mode, its fitted rates, and the largest ε at which
 // the limit law stays within τ of the layer model (bisection on log ε between the samples).
 //
-// Quantities (relative discrete L² distances, studies/error_norms.h), globally only (a user's
+// Quantities (relative discrete L² distances, studies/tools/error_norms.h), globally only (a user's
 // geometry has no corners known in advance):
 //   u        the adherents' nodal displacements (every body of the scene; same nodes, same rows
 //            in both modes), scale U = the largest nodal |u| of the limit mode;
@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "core/io/h5_writer.h"
-#include "studies/rate_fit.h"
-#include "studies/scene_file_scenes.h"
-#include "studies/table3_study.h"
+#include "studies/tools/rate_fit.h"
+#include "cases/scene/scene_file_scenes.h"
+#include "studies/drivers/table3_study.h"
 
 namespace thinlayer {
 
@@ -48,7 +48,7 @@ struct SceneSample {
 
 struct SceneValidityRow {
   double tau = 0;
-  std::string status;  // found | at_least | below_range (as studies/validity_study.h)
+  std::string status;  // found | at_least | below_range (as studies/drivers/validity_study.h)
   double eps_max = 0, error_at_eps_max = 0, eps_beyond = 0;
   int bisection_steps = 0;
   bool converged = true;

@@ -1,4 +1,4 @@
-#include "studies/skip_study.h"
+#include "studies/drivers/skip_study.h"
 
 #include <cstdio>
 #include <string>
@@ -7,10 +7,10 @@
 #include "core/io/column_table.h"
 #include "core/io/reference_tables.h"
 #include "core/solvers/fast_solver.h"
-#include "studies/bar_scenes.h"
-#include "studies/dovetail_scenes.h"
-#include "studies/format.h"
-#include "studies/stopwatch.h"
+#include "cases/bar/bar_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
+#include "studies/tools/format.h"
+#include "studies/tools/stopwatch.h"
 
 namespace thinlayer {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/io/h5_writer.h"
-#include "studies/table3_study.h"
+#include "studies/drivers/table3_study.h"
 
 namespace thinlayer {
 

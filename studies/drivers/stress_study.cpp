@@ -1,4 +1,4 @@
-#include "studies/stress_study.h"
+#include "studies/drivers/stress_study.h"
 
 #include <chrono>
 #include <cstdio>
@@ -9,11 +9,11 @@
 #include "cases/dovetail/dovetail.h"
 #include "core/io/column_table.h"
 #include "core/io/reference_tables.h"
-#include "studies/bar_scenes.h"
-#include "studies/dovetail_scenes.h"
-#include "studies/format.h"
-#include "studies/scene_batch.h"
-#include "studies/stopwatch.h"
+#include "cases/bar/bar_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
+#include "studies/tools/format.h"
+#include "studies/parallel/scene_batch.h"
+#include "studies/tools/stopwatch.h"
 
 namespace thinlayer {
 

@@ -1,6 +1,6 @@
-#include "studies/table3_study.h"
+#include "studies/drivers/table3_study.h"
 
-#include "studies/stopwatch.h"
+#include "studies/tools/stopwatch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <map>
 #include <sstream>
 
-#include "studies/bar_scenes.h"
-#include "studies/format.h"
-#include "studies/scene_batch.h"
+#include "cases/bar/bar_scenes.h"
+#include "studies/tools/format.h"
+#include "studies/parallel/scene_batch.h"
 
 namespace thinlayer {
 
@@ -113,7 +113,7 @@ struct SensitivityRow {
   bool converged, matches;
 };
 
-// What travels between ranks (studies/scene_batch.h).
+// What travels between ranks (studies/parallel/scene_batch.h).
 void put(ByteWriter& w, const Transitions& t) { put(w, t.gap_contact), put(w, t.stick_slip); }
 void get(ByteReader& r, Transitions& t) { get(r, t.gap_contact), get(r, t.stick_slip); }
 void put(ByteWriter& w, const RowRun& r) {

@@ -1,4 +1,4 @@
-#include "studies/thresholds_study.h"
+#include "studies/drivers/thresholds_study.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 
 #include "core/io/column_table.h"
 #include "core/solvers/fast_solver.h"
-#include "studies/bisection.h"
-#include "studies/error_norms.h"
-#include "studies/format.h"
-#include "studies/scene_batch.h"
+#include "studies/tools/bisection.h"
+#include "studies/tools/error_norms.h"
+#include "studies/tools/format.h"
+#include "studies/parallel/scene_batch.h"
 
 namespace thinlayer {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "studies/scene_cache.h"
-#include "studies/table3_study.h"
+#include "studies/tools/scene_cache.h"
+#include "studies/drivers/table3_study.h"
 
 namespace thinlayer {
 

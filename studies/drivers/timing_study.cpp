@@ -1,4 +1,4 @@
-#include "studies/timing_study.h"
+#include "studies/drivers/timing_study.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,11 +13,11 @@
 #include "core/solvers/fast_solver.h"
 #include "core/solvers/relaxation_solver.h"
 #include "core/solvers/siconos_peers.h"
-#include "studies/bar_scenes.h"
-#include "studies/dovetail_scenes.h"
-#include "studies/format.h"
-#include "studies/rate_fit.h"
-#include "studies/stopwatch.h"
+#include "cases/bar/bar_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
+#include "studies/tools/format.h"
+#include "studies/tools/rate_fit.h"
+#include "studies/tools/stopwatch.h"
 
 namespace thinlayer {
 

@@ -9,11 +9,11 @@
 // each against a tightly converged reference and as a ratio to one linear solve
 // (factorisation + solve) of the same mesh; then how time grows with the number of unknowns
 // (the exponent of a log–log fit) and the targets, met or not. Times are medians.
-// "Skip what a scene doesn't need" is its own study (studies/skip_study.h).
+// "Skip what a scene doesn't need" is its own study (studies/drivers/skip_study.h).
 #include <vector>
 
 #include "core/io/h5_writer.h"
-#include "studies/table3_study.h"
+#include "studies/drivers/table3_study.h"
 
 namespace thinlayer {
 

@@ -1,11 +1,11 @@
-#include "studies/validity_study.h"
+#include "studies/drivers/validity_study.h"
 
 #include <algorithm>
 #include <cstdio>
 
 #include "core/io/column_table.h"
-#include "studies/bisection.h"
-#include "studies/format.h"
+#include "studies/tools/bisection.h"
+#include "studies/tools/format.h"
 
 namespace thinlayer {
 

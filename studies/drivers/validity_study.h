@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/convergence_study.h"
+#include "studies/drivers/convergence_study.h"
 
 namespace thinlayer {
 

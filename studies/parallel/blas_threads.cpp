@@ -1,4 +1,4 @@
-#include "studies/blas_threads.h"
+#include "studies/parallel/blas_threads.h"
 
 #include <dlfcn.h>
 

@@ -1,4 +1,4 @@
-#include "studies/process_group.h"
+#include "studies/parallel/process_group.h"
 
 // The C API only: without these, <mpi.h> included from C++ drags in the long-deprecated C++
 // bindings, which live in a library we do not link.
@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "studies/blas_threads.h"
+#include "studies/parallel/blas_threads.h"
 
 namespace thinlayer {
 

@@ -5,7 +5,7 @@
 // MPI is started only when a launcher started us (its environment variables say so), so a
 // plain `thinlayer ...` never loads MPI's machinery, never waits for peers and prints nothing
 // of MPI's. Every rank runs the same study code on the same inputs (SPMD); what differs is
-// which scenes each solves (studies/scene_batch.h) and that only rank 0 prints tables and
+// which scenes each solves (studies/parallel/scene_batch.h) and that only rank 0 prints tables and
 // writes files: the other ranks' stdout goes to /dev/null (their progress lines on stderr
 // stay, prefixed with their rank).
 #include <stdexcept>
@@ -51,7 +51,7 @@ int spread_rank();
 void wait_for_each_other();
 
 // An error that every rank meets at the same point of the run and knows of (a scene that failed,
-// studies/scene_batch.h; an output rank 0 cannot write): rank 0 reports it, once, and every rank
+// studies/parallel/scene_batch.h; an output rank 0 cannot write): rank 0 reports it, once, and every rank
 // ends with exit status 2 without MPI_Abort.
 struct ErrorOnEveryRank : std::runtime_error {
   using std::runtime_error::runtime_error;

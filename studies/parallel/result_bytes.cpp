@@ -1,4 +1,4 @@
-#include "studies/result_bytes.h"
+#include "studies/parallel/result_bytes.h"
 
 namespace thinlayer {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Scene results as bytes, so that a scene solved on one MPI rank can be handed to the others
-// (studies/scene_batch.h). Numbers travel as their exact bit patterns (all ranks run the same
+// (studies/parallel/scene_batch.h). Numbers travel as their exact bit patterns (all ranks run the same
 // binary on the same kind of machine), so a result read back equals the one written, bit for
 // bit: that is what makes a spread study's file identical to a one-process run's.
 //
@@ -20,9 +20,9 @@
 #include "core/io/scene_record.h"
 #include "core/mesh/layer_band.h"
 #include "core/solvers/solve_report.h"
-#include "studies/bar_scenes.h"
-#include "studies/dovetail_scenes.h"
-#include "studies/layer_scene.h"
+#include "cases/bar/bar_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
+#include "cases/layer_scene.h"
 
 namespace thinlayer {
 

@@ -1,4 +1,4 @@
-#include "studies/scene_batch.h"
+#include "studies/parallel/scene_batch.h"
 
 #include <algorithm>
 #include <atomic>
@@ -13,8 +13,8 @@
 #include <thread>
 
 #include "core/io/output_target.h"
-#include "studies/process_group.h"
-#include "studies/stopwatch.h"
+#include "studies/parallel/process_group.h"
+#include "studies/tools/stopwatch.h"
 
 namespace thinlayer {
 

@@ -14,7 +14,7 @@
 // so no rank has to hand out work. Each scene goes to a rank by a longest-first greedy
 // assignment of the cost estimates (assign_longest_first); a rank solves its share on its
 // threads (longest first when there are several), and then every rank receives every result
-// (one all-gather of their bytes, studies/result_bytes.h). Results go to every rank, not just
+// (one all-gather of their bytes, studies/parallel/result_bytes.h). Results go to every rank, not just
 // rank 0, because what a study does next may depend on them (S3's bisection picks its next
 // thicknesses from the distances it measured).
 //
@@ -30,8 +30,8 @@
 #include <string>
 #include <vector>
 
-#include "studies/process_group.h"
-#include "studies/result_bytes.h"
+#include "studies/parallel/process_group.h"
+#include "studies/parallel/result_bytes.h"
 
 namespace thinlayer {
 
@@ -51,7 +51,7 @@ class SceneBatch {
   explicit SceneBatch(std::string tag, int threads = 1, bool verbose = false);
 
   // `result` must stay where it is until run() returns; `solve` returns a value of its type,
-  // one that has put/get overloads (studies/result_bytes.h) for the trip between ranks.
+  // one that has put/get overloads (studies/parallel/result_bytes.h) for the trip between ranks.
   template <class Result, class Solve>
   void add(std::string label, double cost, Result& result, Solve solve) {
     Task t{std::move(label), cost, {}, {}, {}};

@@ -1,10 +1,10 @@
-#include "studies/spread_command.h"
+#include "studies/parallel/spread_command.h"
 
 #include <iostream>
 
-#include "studies/process_group.h"
-#include "studies/results_file.h"
-#include "studies/scene_batch.h"
+#include "studies/parallel/process_group.h"
+#include "studies/cli/results_file.h"
+#include "studies/parallel/scene_batch.h"
 
 namespace thinlayer {
 

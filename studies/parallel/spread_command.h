@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/io/h5_writer.h"
-#include "studies/table3_study.h"
+#include "studies/drivers/table3_study.h"
 
 namespace thinlayer {
 
@@ -33,7 +33,7 @@ std::vector<Check> on_root_alone(const std::string& study, const std::string& wh
 int command_status(int status);
 
 // Reports an error of `thinlayer COMMAND` and returns exit status 2. An ErrorOnEveryRank (a
-// scene's failure, studies/scene_batch.h; an output rank 0 refused) is met by every rank alike
+// scene's failure, studies/parallel/scene_batch.h; an output rank 0 refused) is met by every rank alike
 // and printed once; any other error under K > 1
 // ranks may be this rank's alone, so it stops every rank (MPI_Abort, status 2).
 int command_failed(const std::string& command, const std::exception& e);

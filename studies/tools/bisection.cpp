@@ -1,4 +1,4 @@
-#include "studies/bisection.h"
+#include "studies/tools/bisection.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "studies/error_norms.h"
+#include "studies/tools/error_norms.h"
 
 #include <algorithm>
 #include <cmath>

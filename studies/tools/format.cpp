@@ -1,4 +1,4 @@
-#include "studies/format.h"
+#include "studies/tools/format.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "studies/mode_distance.h"
+#include "studies/tools/mode_distance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "cases/dovetail/dovetail.h"
 #include "cases/dovetail/dovetail_mesh.h"
-#include "studies/error_norms.h"
+#include "studies/tools/error_norms.h"
 
 namespace thinlayer {
 

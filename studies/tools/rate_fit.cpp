@@ -1,4 +1,4 @@
-#include "studies/rate_fit.h"
+#include "studies/tools/rate_fit.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,7 +1,7 @@
-#include "studies/scene_cache.h"
+#include "studies/tools/scene_cache.h"
 
-#include "studies/scene_batch.h"
-#include "studies/stopwatch.h"
+#include "studies/parallel/scene_batch.h"
+#include "studies/tools/stopwatch.h"
 
 #include <algorithm>
 #include <atomic>

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/io/h5_writer.h"
-#include "studies/dovetail_scenes.h"
+#include "cases/dovetail/dovetail_scenes.h"
 
 namespace thinlayer {
 
