@@ -287,3 +287,10 @@ TEST(SceneClosedForm, BodyHeldByContactAloneLayerMode) {
     previous = error;
   }
 }
+
+TEST(SceneJson, OverflowAndUnderflowNamed) {
+  // nlohmann refuses an overflow itself, where the number ends.
+  EXPECT_EQ(expect_input_error("{\"a\": [1,\n 1e999]}"), "s.json:2:6: number overflow parsing '1e999'");
+  EXPECT_EQ(expect_input_error("{\"a\": 1e-400}"), "s.json:1:7: the number 1e-400 underflows a double");
+  EXPECT_EQ(expect_input_error("{\"a\": 0.0e-400}"), "");  // a plain zero
+}

@@ -35,6 +35,7 @@ Curve Loop(3) = {8, 9, 10, 11}; Plane Surface(3) = {3};
 Physical Surface("a") = {1}; Physical Surface("b") = {2}; Physical Surface("loose") = {3};
 Physical Curve("bond") = {3}; Physical Curve("bottom") = {1}; Physical Curve("top") = {6};
 Physical Curve("a_only") = {2};
+Physical Point("corner") = {1};
 """
 
 
@@ -144,6 +145,21 @@ def main():
                 folder)
         refused("study: scene on a study without", ["study", "table3", "--scene", "good.json", "--out", "study"],
                 "--scene applies to study convergence and study validity only", folder)
+
+        # A support on a physical point: the bottom on rollers, the corner pinned.
+        s = scene()
+        s["supports"] = [{"group": "bottom", "u": [None, 0]}, {"group": "corner", "u": [0, 0]},
+                         {"group": "top", "u": [0.001, -0.001]}]
+        write("point.json", s)
+        r = subprocess.run([THINLAYER, "solve", "--scene", "point.json", "--json", "--out", "point.h5"], cwd=folder,
+                           capture_output=True, text=True)
+        check("support on a point", r.returncode == 0 and json.loads(r.stdout)["converged"], r.stdout + r.stderr)
+        if r.returncode == 0:
+            with h5py.File(os.path.join(folder, "point.h5")) as h:
+                reactions = h["scenes"][json.loads(r.stdout)["scene"]]["reactions"]
+                check("a point's reaction", set(reactions) == {"bottom", "corner", "top"}, str(list(reactions)))
+        write("underflow.json", json.dumps(scene()).replace('"friction": 0.5', '"friction": 1e-400'))
+        refused("underflow", ["solve", "--scene", "underflow.json", *outs], "underflows a double", folder)
 
         # The shipped lap joint, both modes: written results files that describe themselves.
         lap = os.path.join(LAP, "lap_joint.json")

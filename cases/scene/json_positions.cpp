@@ -55,7 +55,14 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
   bool boolean(bool) override { return value(); }
   bool number_integer(number_integer_t) override { return value(); }
   bool number_unsigned(number_unsigned_t) override { return value(); }
-  bool number_float(number_float_t, const string_t&) override { return value(); }
+  // SPEC §4's strict numbers: an underflow is named, never read as 0 (nlohmann refuses an
+  // overflow itself).
+  bool number_float(number_float_t x, const string_t& text) override {
+    const std::size_t start = next_token(last_end_, stack_.empty() || !stack_.back().object ? "[," : ":");
+    if (x == 0 && text.find_first_of("123456789") < text.find_first_of("eE"))
+      return refuse(start, "the number " + text + " underflows a double");
+    return value();
+  }
   bool string(string_t&) override { return value(); }
   bool binary(binary_t&) override { return value(); }
   bool start_object(std::size_t) override {
@@ -91,6 +98,11 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
   }
 
   const std::string& duplicate() const { return duplicate_; }
+  bool refuse(std::size_t at, const std::string& why) {
+    duplicate_ = why;
+    duplicate_at_ = position_of(text_, at);
+    return false;
+  }
   TextPosition duplicate_at() const { return duplicate_at_; }
   const std::string& error() const { return error_; }
   std::size_t error_byte() const { return error_byte_; }
@@ -161,8 +173,9 @@ std::string where(const std::string& source, TextPosition p) {
 // nlohmann's message without its "[json.exception.parse_error.101] parse error at line 3,
 // column 5: " prefix (the position is given our way, in front).
 std::string syntax_message(const std::string& what) {
-  const std::size_t s = what.find("syntax error");
-  return s == std::string::npos ? what : what.substr(s);
+  if (const std::size_t s = what.find("syntax error"); s != std::string::npos) return what.substr(s);
+  if (what.rfind("[json.exception.", 0) == 0) return what.substr(what.find("] ") + 2);
+  return what;
 }
 
 }  // namespace

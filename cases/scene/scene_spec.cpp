@@ -22,6 +22,13 @@ const char* type_name(const json& v) {
   return "an object";
 }
 
+// A key as a JSON pointer token (RFC 6901: '~' → "~0", '/' → "~1").
+std::string pointer_token(const std::string& key) {
+  std::string s;
+  for (char c : key) s += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+  return s;
+}
+
 // One JSON object of the scene file: its allowed keys, and typed access that fails at the
 // key's position.
 class ObjectReader {
@@ -39,7 +46,7 @@ class ObjectReader {
   }
 
   bool has(const std::string& key) const { return object().contains(key); }
-  std::string child(const std::string& key) const { return pointer_ + "/" + key; }
+  std::string child(const std::string& key) const { return pointer_ + "/" + pointer_token(key); }
   std::string where(const std::string& key) const {
     const TextPosition p = doc_.at(child(key));
     return doc_.source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
@@ -91,6 +98,7 @@ class ObjectReader {
 };
 
 constexpr double inf = std::numeric_limits<double>::infinity();
+
 constexpr double modulus_max = 1e12;  // daN/mm²: far above any solid (diamond ~ 5e4)
 
 std::string resolve(const std::string& folder, const std::string& path) {
@@ -265,13 +273,13 @@ SceneSpec scene_spec_from_json(const PositionedJson& doc, const std::string& fol
   if (!bodies.is_object() || bodies.empty()) root.fail("bodies", "'bodies' must be an object naming at least one body");
   // nlohmann's objects are sorted by key; the file's order is the order of the positions.
   std::vector<std::pair<TextPosition, std::string>> order;
-  for (const auto& [name, _] : bodies.items()) order.push_back({doc.at("/bodies/" + name), name});
+  for (const auto& [name, _] : bodies.items()) order.push_back({doc.at("/bodies/" + pointer_token(name)), name});
   std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
     return a.first.line != b.first.line ? a.first.line < b.first.line : a.first.column < b.first.column;
   });
   for (const auto& [pos, name] : order) {
     if (name == "layer") root.fail("bodies", "a body may not be called 'layer' (the name of the layer mode's layer)");
-    SceneBodySpec body = read_body(doc, name, "/bodies/" + name);
+    SceneBodySpec body = read_body(doc, name, "/bodies/" + pointer_token(name));
     body.where = doc.source + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column);
     s.bodies.push_back(body);
   }

@@ -18,16 +18,6 @@
 
 namespace thinlayer {
 
-const char* const scene_help = R"(Your own joint (SPEC 5): a JSON scene file naming the physical groups of a gmsh geometry
-  thinlayer solve --scene FILE.json [--mode limit|layer] [--eps E] [--out F.h5] [--vtu F.vtu] [--json]
-                  [--solver fast|relaxation] [--tolerance T] [--max-iterations N] [--verbose]
-  thinlayer study convergence --scene FILE.json [--out DIR] [--eps LIST] [--tolerance T] [--threads N] [--quiet]
-  thinlayer study validity    --scene FILE.json [same, and --bisection-steps N]
-  --eps: the layer's thickness in mm (layer mode), at most half the depth of the plus body's
-  elements along the interface; the studies take the scene's "eps" list, else 1e-2 .. 1e-4.
-  The format is in README.md, "Your own joint"; cases/lap_joint/ is an example.
-)";
-
 namespace {
 
 struct SceneSolveInput {

@@ -10,8 +10,6 @@
 
 namespace thinlayer {
 
-extern const char* const scene_help;
-
 // Whether the arguments name a scene file (--scene X or --scene=X).
 bool names_scene(const std::vector<std::string>& argv);
 
