@@ -2,17 +2,7 @@
 // S2 and S3 (SPEC §3) on a user's scene file (SPEC §5): the distance between the layer mode at
 // every ε of the scene's grid and the limit mode, its fitted rates, and the largest ε at which
 // the limit law stays within τ of the layer model (bisection on log ε between the samples).
-//
-// Quantities (relative discrete L² distances, studies/tools/error_norms.h), globally only (a user's
-// geometry has no corners known in advance):
-//   u        the adherents' nodal displacements (every body of the scene; same nodes, same rows
-//            in both modes), scale U = the largest nodal |u| of the limit mode;
-//   jump_N,  [u]_N and [u]_T across the whole layer: from the adherents' pair of nodes at each
-//   jump_T   node of S, with the limit's normal; scale U;
-//   sigma_N, σ_N, σ_T on the plus body's face (S in limit mode, S+ in layer mode); scale the
-//   sigma_T  largest |σ| of the limit mode on S.
-// The scales matter where the limit field vanishes (a law that opens everywhere): there the
-// distance is relative to the problem's magnitude, not to zero.
+// The distances: studies/tools/scene_distance.h.
 #include <map>
 #include <optional>
 #include <string>
@@ -65,12 +55,6 @@ struct SceneStudyResult {
   std::vector<SceneValidityRow> validity;
   std::vector<Check> checks;
 };
-
-const std::vector<std::string>& scene_distance_quantities();
-
-// The distances of one layer record to the limit record.
-std::map<std::string, double> scene_distance(const SceneFileBulk& bulk, const SceneRecord& layer,
-                                             const SceneRecord& limit, int* status_diff = nullptr);
 
 // Runs S2 (and S3 if options.validity), prints its tables, writes /studies/scene/<name>/ and
 // every scene it solved under /scenes when `out` is given. Checks (ids "scene.<name>.*"): the
