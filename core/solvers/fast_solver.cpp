@@ -42,12 +42,13 @@ bool film_far_off(const ContactProblem& problem, const CondensedInterface& conde
 }
 
 StopCause stop_cause(const Condensed& c, const std::vector<Active>& statuses, const ActiveSetRun& run,
-                     const SolveReport& report, bool cap_reached) {
+                     const SolveReport& report, bool cap_reached, bool stagnated) {
   if (!report.u.allFinite() || !report.r.allFinite() || !std::isfinite(report.residual.value()))
     return StopCause::NonFinite;
   if (floating_bodies_free(c, statuses)) return StopCause::Singular;
   if (report.converged) return StopCause::Converged;
   if (cap_reached) return StopCause::IterationCap;
+  if (stagnated) return StopCause::Stagnated;
   return run.singular ? StopCause::Singular : StopCause::LossOfAccuracy;
 }
 
@@ -66,6 +67,10 @@ std::string explain(const SolveReport& report, int max_iterations) {
       break;
     case StopCause::NonFinite:
       why << "NaN or Inf in the iterate";
+      break;
+    case StopCause::Stagnated:
+      why << "the layer's outer steps stopped improving the best residual (it did not halve over the last "
+             "30 anchor updates or 100 proximal steps); the best iterate is reported";
       break;
     case StopCause::Converged:
       break;
@@ -90,6 +95,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   std::vector<Active> statuses = guess_statuses(c, r, jump_part(c, r, w));
   ActiveSetRun run;
   int outer_steps = 0;   // floating layer: anchor updates or proximal steps
+  bool stagnated = false;  // floating layer: a path gave up for want of progress
   std::string path;      // floating layer: which path(s) ran
   if (nw == 0) {
     run = active_set(c, problem, statuses, r, w, max_iterations);
@@ -105,6 +111,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       layer = solve_floating_layer(c, problem, condensed, options, r, w,
                                    options.max_iterations > 0 ? options.max_iterations : dual_cap);
       path = "dual";
+      stagnated = layer.stagnated;
       // A film moved a hundred times further than the bodies that hold it sits in a mode whose
       // stiffness is below round-off: the residual cannot see it, but the selection is wild (the
       // bar's row 5 at ε = 1e-4: a free film end thrown 181 mm off, one node's status and the
@@ -127,12 +134,14 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
       const int cap = std::min(options.max_iterations > 0 ? options.max_iterations : proximal_cap,
                                have_answer ? proximal_cap_with_answer : proximal_cap);
       FloatingLayerRun fallback = solve_layer_proximal(c, problem, condensed, options, r, w, cap);
+      stagnated = stagnated || fallback.stagnated;
       if (!(fallback.residual <= options.tolerance) && !have_answer) {
         // The proximal path depends on the complementarity parameter: a second attempt with a
         // ten times smaller one rescued scenes at earlier stops (the dovetail's (e) at 5e-4).
         const Condensed c_small = condense(problem, condensed, 0.1 * options.complementarity_scale,
                                            options.skip_frictionless_rows);
         FloatingLayerRun second = solve_layer_proximal(c_small, problem, condensed, options, r, w, cap);
+        stagnated = stagnated || second.stagnated;
         second.newton_steps += fallback.newton_steps;
         second.outer_steps += fallback.outer_steps;
         if (second.residual < fallback.residual) fallback = std::move(second);
@@ -171,7 +180,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   // The worse of the two systems solved: the final active-set matrix and the bulk's CHOLMOD
   // factors (whose estimate is crude and optimistic, so it rarely decides).
   report.condition_estimate = 1.0 / std::max(std::min(run.rcond, condensed.rcond()), 1e-300);
-  report.stop_cause = stop_cause(c, statuses, run, report, report.iterations >= max_iterations);
+  report.stop_cause = stop_cause(c, statuses, run, report, report.iterations >= max_iterations, stagnated);
   report.converged = report.stop_cause == StopCause::Converged;
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream msg;

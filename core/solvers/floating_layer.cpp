@@ -7,9 +7,15 @@
 
 #include <Eigen/Dense>
 
+#include "core/solvers/stagnation.h"
+
 namespace thinlayer {
 
 namespace {
+
+// Outer steps over which the best residual must halve (stagnation.h): the anchor updates that
+// converge do so by orders of magnitude in a few steps, those that crawl gain ~0.5 % a step.
+constexpr int stagnation_window = 30;
 
 // The layer's dual operator for one anchor (see the header).
 class LayerDual {
@@ -84,6 +90,7 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
   };
   Eigen::VectorXd w_anchor = w;
   run.residual = std::numeric_limits<double>::infinity();  // of the best iterate, kept in run
+  Stagnation stagnation(stagnation_window);
   while (run.newton_steps < max_steps) {
     ++run.outer_steps;
     // 1. The statuses, on the layer's dual operator (NSGS sweeps break an active-set cycle).
@@ -130,6 +137,10 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
                            "regularised %.3e%s\n", run.outer_steps, run.newton_steps, polished, regularised,
                    exact.singular ? " (singular)" : "");
     if (run.residual <= options.tolerance) break;
+    if (stagnation.after_step(run.residual)) {
+      run.stagnated = true;
+      break;
+    }
     // 3. Not yet: the anchor moves to where the layer is, and the next step starts there.
     w_anchor = w_regularised;
   }

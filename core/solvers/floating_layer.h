@@ -35,6 +35,7 @@ struct FloatingLayerRun {
   bool singular = false;  // the last polish's system was rank deficient (the film's position free)
   double rcond = 1;
   double residual = 0;    // the true SPEC residual of (r, w): the best iterate met is returned
+  bool stagnated = false; // stopped because the best residual no longer improved (stagnation.h)
 };
 
 // options.tolerance decides convergence; at most max_steps Newton steps.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/solvers/stagnation.h"
+
 namespace thinlayer {
 
 FloatingLayerRun solve_layer_proximal(const Condensed& c, const ContactProblem& problem,
@@ -20,6 +22,9 @@ FloatingLayerRun solve_layer_proximal(const Condensed& c, const ContactProblem& 
   };
   std::vector<Active> statuses = guess_statuses(c, r, jump_part(c, r, w));
   run.residual = std::numeric_limits<double>::infinity();  // of the best iterate, kept in run
+  // A window of 100 steps: this path may crawl and still get there (the dovetail's (e) at
+  // ε = 5e-4 gains 1 % a step for 250 steps, then converges).
+  Stagnation stagnation(100);
   while (run.newton_steps < max_steps) {
     ++run.outer_steps;
     proximal.S = c.S;
@@ -46,6 +51,10 @@ FloatingLayerRun solve_layer_proximal(const Condensed& c, const ContactProblem& 
         run.residual = polished;
       }
       if (polished <= options.tolerance) break;
+    }
+    if (stagnation.after_step(run.residual)) {
+      run.stagnated = true;
+      break;
     }
     const bool quick = step.settled && step.iterations <= 3;
     alpha = quick ? std::max(alpha * 0.1, options.proximal_weight * 1e-6) : std::min(alpha * 10, options.proximal_weight);

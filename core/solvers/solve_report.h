@@ -16,6 +16,7 @@ enum class StopCause {
   IterationCap,    // the iteration cap was reached first
   Singular,        // the answer is not unique: a floating body is held by none of its contacts
   LossOfAccuracy,  // the statuses settled but the linear solve could not reach the tolerance
+  Stagnated,       // the outer iteration stopped improving its best residual (core/solvers/stagnation.h)
   NonFinite,       // NaN or Inf appeared in the iterate
 };
 const char* to_string(StopCause cause);

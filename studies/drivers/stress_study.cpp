@@ -231,7 +231,8 @@ std::vector<Check> run_stress_study(const StressStudyOptions& options, H5Writer*
     const Outcome& o = results[i].o;
     if (out && results[i].has_record) write_scene(*out, results[i].record);
     const bool named = o.outcome == to_string(StopCause::Converged) || o.outcome == to_string(StopCause::IterationCap) ||
-                       o.outcome == to_string(StopCause::Singular) || o.outcome == to_string(StopCause::LossOfAccuracy);
+                       o.outcome == to_string(StopCause::Singular) || o.outcome == to_string(StopCause::LossOfAccuracy) ||
+                       o.outcome == to_string(StopCause::Stagnated);
     checks.push_back({"stress." + scene.id + ".named", named && o.finite,
                       "converged, or stopped with a named cause; no NaN/Inf", o.outcome + (o.finite ? "" : ", NaN/Inf"),
                       ""});
@@ -258,7 +259,7 @@ std::vector<Check> run_stress_study(const StressStudyOptions& options, H5Writer*
   if (out) {
     table.write(*out, "/studies/stress");
     out->attr("/studies/stress", "note",
-              std::string("outcome: converged | iteration cap | singular system | loss of accuracy | non-finite "
+              std::string("outcome: converged | iteration cap | singular system | loss of accuracy | stagnated | non-finite "
                           "values | error; residual -1 where the result was not finite; counts gap/slide/stick on S"));
   }
   return checks;
