@@ -159,6 +159,11 @@ TEST(SceneSpec, UnknownKeyNamedWithItsPosition) {
   EXPECT_EQ(m.rfind("s.json:2:2: unknown key 'frction' in the scene", 0), 0u) << m;
 }
 
+TEST(SceneSpec, NameThatWouldNestGroupsRefused) {
+  const std::string m = spec_error("{\"name\": \"a/b\"}");
+  EXPECT_EQ(m.rfind("s.json:1:2: 'name' may hold letters", 0), 0u) << m;
+}
+
 TEST(SceneSpec, WrongTypeNamedWithItsPosition) {
   const std::string m = spec_error("{\"name\": 3}");
   EXPECT_EQ(m, "s.json:1:2: 'name' in the scene must be a string, not a number");

@@ -1,6 +1,7 @@
 #include "cases/scene/scene_spec.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -267,6 +268,10 @@ SceneSpec scene_spec_from_json(const PositionedJson& doc, const std::string& fol
   s.file = doc.source;
   s.folder = folder;
   s.name = root.text("name");
+  // The name becomes HDF5 group and scene names (/studies/scene/<name>, <name>-limit-fast).
+  for (char c : s.name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.'))
+      root.fail("name", "'name' may hold letters, digits, '-', '_' and '.' only (it names groups in the results file)");
   read_options(root, s);
   read_geometry(root, s);
   const json& bodies = root.require("bodies");
