@@ -37,14 +37,6 @@ double predicted_rate(char c) {
   throw std::runtime_error(std::string("reference/predicted_rates.csv has no case ") + c);
 }
 
-template <class Fit>
-std::string rate_text(const std::optional<Fit>& f) {
-  if (!f) return "n/a";
-  char s[64];
-  std::snprintf(s, sizeof s, "%.2f±%.2f", f->p, f->p_stderr);
-  return s;
-}
-
 void print_case(const CaseConvergence& c, const std::vector<DovetailScene const*>& layers) {
   std::printf("\ncase %c (gamma %g, delta %g): predicted p = %g\n", c.law_case, c.gamma, c.delta, c.p_predicted);
   std::printf("  %-7s", "eps");
@@ -57,16 +49,7 @@ void print_case(const CaseConvergence& c, const std::vector<DovetailScene const*
     std::printf(" %5d %5d %9s %8.2f%s\n", c.distance[i].status_diff, r.iterations, sci(r.residual.value(), 1).c_str(),
                 r.wall_time_s, r.converged ? "" : "  NOT converged");
   }
-  std::printf("  %-7s", "p");
-  for (const std::string& q : distance_quantities()) std::printf(" %12s", rate_text(c.fit.at(q)).c_str());
-  std::printf("\n  %-7s", "p floor");
-  for (const std::string& q : distance_quantities()) std::printf(" %12s", rate_text(c.floor_fit.at(q)).c_str());
-  std::printf("\n  %-7s", "e_inf");
-  for (const std::string& q : distance_quantities()) {
-    const auto& f = c.floor_fit.at(q);
-    std::printf(" %12s", f ? sci(f->floor, 2).c_str() : "n/a");
-  }
-  std::printf("\n");
+  print_fit_rows(distance_quantities(), c.fit, c.floor_fit, 7, 12);
 }
 
 void write_case(H5Writer& out, const CaseConvergence& c) {

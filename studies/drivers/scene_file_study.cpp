@@ -27,14 +27,6 @@ std::optional<double> predicted_rate(const SceneSpec& spec) {
   return std::nullopt;
 }
 
-template <class Fit>
-std::string rate_text(const std::optional<Fit>& f) {
-  if (!f) return "n/a";
-  char s[64];
-  std::snprintf(s, sizeof s, "%.2f±%.2f", f->p, f->p_stderr);
-  return s;
-}
-
 // Layer scenes at the given thicknesses, `threads` at a time (each builds its own model; no
 // gmsh, no shared factorisation).
 std::vector<SceneFileScene> solve_layers(const SceneFileBulk& bulk, const std::vector<double>& eps,
@@ -89,16 +81,7 @@ void print_samples(const SceneStudyResult& r) {
     std::printf(" %5d %5d %9s %8.2f%s\n", s.status_diff, s.iterations, sci(s.residual, 1).c_str(), s.time_s,
                 s.converged ? "" : "  NOT converged");
   }
-  std::printf("  %-8s", "p");
-  for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", rate_text(r.fit.at(q)).c_str());
-  std::printf("\n  %-8s", "p floor");
-  for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", rate_text(r.floor_fit.at(q)).c_str());
-  std::printf("\n  %-8s", "e_inf");
-  for (const std::string& q : scene_distance_quantities()) {
-    const auto& f = r.floor_fit.at(q);
-    std::printf(" %10s", f ? sci(f->floor, 2).c_str() : "n/a");
-  }
-  std::printf("\n");
+  print_fit_rows(scene_distance_quantities(), r.fit, r.floor_fit, 8, 10);
 }
 
 // S3 on the samples: for each τ the bracket between samples, then bisection rounds (the

@@ -1,9 +1,12 @@
 #include "studies/tools/rate_fit.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <Eigen/Dense>
+
+#include "studies/tools/format.h"
 
 namespace thinlayer {
 
@@ -116,6 +119,37 @@ std::optional<FlooredPowerLawFit> fit_power_law_with_floor(const std::vector<dou
   const Eigen::MatrixXd cov = s2 * (Jf.transpose() * Jf).inverse();
   fit.p_stderr = std::sqrt(std::max(0.0, cov(cov.rows() - 1, cov.cols() - 1)));
   return fit;
+}
+
+namespace {
+
+template <class Fit>
+std::string rate_text_of(const std::optional<Fit>& f) {
+  if (!f) return "n/a";
+  char s[64];
+  std::snprintf(s, sizeof s, "%.2f±%.2f", f->p, f->p_stderr);
+  return s;
+}
+
+}  // namespace
+
+std::string rate_text(const std::optional<PowerLawFit>& fit) { return rate_text_of(fit); }
+std::string rate_text(const std::optional<FlooredPowerLawFit>& fit) { return rate_text_of(fit); }
+
+void print_fit_rows(const std::vector<std::string>& quantities,
+                    const std::map<std::string, std::optional<PowerLawFit>>& fit,
+                    const std::map<std::string, std::optional<FlooredPowerLawFit>>& floor_fit, int label_width,
+                    int column_width) {
+  std::printf("  %-*s", label_width, "p");
+  for (const std::string& q : quantities) std::printf(" %*s", column_width, rate_text(fit.at(q)).c_str());
+  std::printf("\n  %-*s", label_width, "p floor");
+  for (const std::string& q : quantities) std::printf(" %*s", column_width, rate_text(floor_fit.at(q)).c_str());
+  std::printf("\n  %-*s", label_width, "e_inf");
+  for (const std::string& q : quantities) {
+    const auto& f = floor_fit.at(q);
+    std::printf(" %*s", column_width, f ? sci(f->floor, 2).c_str() : "n/a");
+  }
+  std::printf("\n");
 }
 
 }  // namespace thinlayer

@@ -1,6 +1,8 @@
 #pragma once
 // The convergence rate p in e(ε) ≈ C ε^p, fitted by least squares on the log–log points.
+#include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace thinlayer {
@@ -30,5 +32,16 @@ struct FlooredPowerLawFit {
 };
 std::optional<FlooredPowerLawFit> fit_power_law_with_floor(const std::vector<double>& eps,
                                                           const std::vector<double>& error);
+
+// "p±se" of a fit, "n/a" without one.
+std::string rate_text(const std::optional<PowerLawFit>& fit);
+std::string rate_text(const std::optional<FlooredPowerLawFit>& fit);
+
+// The three rows under a study's distance table, one column per quantity: the plain fit "p",
+// the floored fit "p floor" and its floor "e_inf". label_width and column_width as the table's.
+void print_fit_rows(const std::vector<std::string>& quantities,
+                    const std::map<std::string, std::optional<PowerLawFit>>& fit,
+                    const std::map<std::string, std::optional<FlooredPowerLawFit>>& floor_fit, int label_width,
+                    int column_width);
 
 }  // namespace thinlayer
