@@ -24,7 +24,7 @@ struct Verify : ::testing::Test {
   // Runs verify with the given reference directory; returns the exit status.
   int run(const fs::path& reference, const fs::path& out) {
     const std::string command = "THINLAYER_REFERENCE_DIR=" + reference.string() + " " + THINLAYER_CLI +
-                                " verify --quick --quiet --repeats 1 --cases d --eps 1e-2,5e-3,1e-3 --out " +
+                                " verify --quick --quiet --repeats 1 --cases d --eps 1e-2,5e-3,1e-3 --rate-eps 1e-3,3e-4,1e-4 --out " +
                                 out.string() + " >" + (dir / "stdout").string() + " 2>" + (dir / "stderr").string();
     const int raw = std::system(command.c_str());
     return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -19,7 +19,9 @@
 #include "studies/drivers/scene_file_study.h"
 #include "studies/tools/stopwatch.h"
 #include "studies/cli/summary_json.h"
+#include "studies/drivers/cauchy_rates.h"
 #include "studies/drivers/convergence_study.h"
+#include "studies/drivers/floor_study.h"
 #include "studies/drivers/dovetail_study.h"
 #include "studies/tools/format.h"
 #include "studies/cli/options.h"
@@ -48,7 +50,8 @@ Studies:
   dovetail     the nine cases of Table 2 in limit mode and in layer mode at every eps
                (SPEC 2.2): statuses per face and combined, iterations, residuals, times
   convergence  S2: distances between the layer and limit modes of the dovetail at every eps,
-               fitted rates against the predicted ones (studies/convergence_rates.md)
+               and the rates from the layer model's Cauchy differences along a finer eps
+               grid against the predicted ones (studies/convergence_rates.md)
   validity     S3 (runs S2 for its samples): the largest eps at which the limit law stays
                within 1 % and 5 % of the layer model, by bisection on eps
   thresholds   S4: the error of replacing a finite law by the 0 or inf law across the
@@ -71,15 +74,18 @@ and S3 on a scene file (README, "Your own joint"); options --out, --eps LIST (mm
 Options:
   --out DIR          write DIR/results.h5 (the scenes and the study's tables)
   --repeats N        table3, timing: repetitions per timed solve, medians reported (default 3)
-  --quick            table3: skip the sensitivity and refinement parts; stress: skip the
-                     scenes at eps <= 1e-6 and the slowest contrast; timing: bar levels
-                     32-128, peers at 32 and 64, dovetail h 0.05 and 0.025, layer eps 1e-4
+  --quick            table3: skip the sensitivity and refinement parts; S2: skip the floor
+                     study (three mesh levels); stress: skip the scenes at eps <= 1e-6 and
+                     the slowest contrast; timing: bar levels 32-128, peers at 32 and 64,
+                     dovetail h 0.05 and 0.025, layer eps 1e-4
   --quiet            no progress lines on stderr
   --cases LETTERS    dovetail studies: the cases to run, each once (default abcdefghi)
   --eps LIST         dovetail studies: comma-separated thicknesses, each in (0, 0.1]
                      (default 1e-2,5e-3,1e-3,5e-4,1e-4)
-  --tolerance T      S2/S3: the SPEC residual the scenes are solved to (default 1e-8; case d is
-                     re-solved at 1e-10 to show the distances do not depend on it)
+  --rate-eps LIST    S2: the decreasing eps grid of the Cauchy differences (default
+                     1e-4 ... 1e-8, ratio 10^-1/2); the rate is fitted on eps <= 1e-4
+  --tolerance T      S2/S3: the SPEC residual the scenes are solved to (default 1e-10; below
+                     it, case d is re-solved at 1e-10 to show how much the distances move)
   --threads N        S2/S3: layer-mode scenes solved in parallel (default 2)
   --bisection-steps N  S3: bisection steps per bracket (default 2)
   --relaxation-cap N dovetail: also run the relaxation solver, capped at N sweeps
@@ -100,7 +106,7 @@ and writes
   DIR/report/index.html    the report, with its figures (made from results.h5 alone:
                            /usr/bin/python3 report/make_report.py DIR/results.h5 DIR/report)
 Options: those of `thinlayer study` that the studies it runs read: --out, --quiet, --repeats,
---quick, --cases, --eps, --tolerance, --threads, --bisection-steps.
+--quick, --cases, --eps, --rate-eps, --tolerance, --threads, --bisection-steps.
 Exit status: 0 only if every check passes; 1 if one fails; 2 on bad input or a failure to
 write an output.
 )";
@@ -112,6 +118,9 @@ struct StudyInput {
   Table3StudyOptions table3;
   DovetailStudyOptions dovetail;
   ConvergenceStudyOptions convergence;
+  CauchyStudyOptions rates;
+  FloorStudyOptions floor;
+  bool floor_study = true;  // --quick skips it (three mesh levels, the finest the slowest scenes of S2)
   ValidityStudyOptions validity;
   ThresholdsStudyOptions thresholds;
   TimingStudyOptions timing;
@@ -124,14 +133,14 @@ struct StudyInput {
 const std::map<std::string, std::set<std::string>> study_options = {
     {"table3", {"out", "quiet", "repeats", "quick"}},
     {"dovetail", {"out", "quiet", "cases", "eps", "relaxation-cap", "friction-path"}},
-    {"convergence", {"out", "quiet", "cases", "eps", "tolerance", "threads"}},
+    {"convergence", {"out", "quiet", "quick", "cases", "eps", "rate-eps", "tolerance", "threads"}},
     {"validity", {"out", "quiet", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
     {"thresholds", {"out", "quiet"}},
-    {"asymptotics", {"out", "quiet", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
+    {"asymptotics", {"out", "quiet", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
     {"timing", {"out", "quiet", "repeats", "quick"}},
     {"stress", {"out", "quiet", "quick"}},
     // verify runs table3, asymptotics, the quick timing and stress.
-    {"verify", {"out", "quiet", "repeats", "quick", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
+    {"verify", {"out", "quiet", "repeats", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
 };
 
 // The dovetail's thickest thin layer (its layer meshes stop there; SPEC §4: a layer thicker
@@ -139,8 +148,8 @@ const std::map<std::string, std::set<std::string>> study_options = {
 constexpr double thickest_dovetail_layer = 0.1;
 
 StudyInput parse(const std::vector<std::string>& argv, const std::string& name) {
-  const Args args(argv, {"out", "repeats", "cases", "eps", "relaxation-cap", "tolerance", "threads", "bisection-steps",
-                   "friction-path"},
+  const Args args(argv, {"out", "repeats", "cases", "eps", "rate-eps", "relaxation-cap", "tolerance", "threads",
+                   "bisection-steps", "friction-path"},
                   {"quick", "quiet"});
   require_only(args, study_options.at(name), name == "verify" ? "verify" : "study " + name);
   const bool require_out = name == "verify";
@@ -153,6 +162,7 @@ StudyInput parse(const std::vector<std::string>& argv, const std::string& name) 
     in.table3.sensitivity = in.table3.refinement = false;
     in.stress.quick = true;
     in.timing = TimingStudyOptions::quick();
+    in.floor_study = false;
   }
   in.timing.repeats = in.table3.repeats;
   in.verbose = !args.has("quiet");
@@ -171,6 +181,15 @@ StudyInput parse(const std::vector<std::string>& argv, const std::string& name) 
       else if (eps > thickest_dovetail_layer)
         throw std::invalid_argument("--eps: " + plain(eps) + " is no thin layer for the dovetail: at most 0.1 (a tenth of its size)");
   }
+  if (args.has("rate-eps")) {
+    in.rates.eps = parse_number_list("rate-eps", args.text("rate-eps", ""));
+    for (size_t k = 0; k < in.rates.eps.size(); ++k)
+      if (!(in.rates.eps[k] > 0) || std::isinf(in.rates.eps[k]) || in.rates.eps[k] > thickest_dovetail_layer)
+        throw std::invalid_argument("--rate-eps: thicknesses must be in (0, 0.1]");
+      else if (k > 0 && !(in.rates.eps[k] < in.rates.eps[k - 1]))
+        throw std::invalid_argument("--rate-eps: the grid must decrease (its neighbours are differenced)");
+    if (in.rates.eps.size() < 2) throw std::invalid_argument("--rate-eps: give at least two thicknesses");
+  }
   if (args.has("friction-path"))
     in.dovetail.friction_path = friction_path_multipliers(args.text("friction-path", ""), dovetail::friction);
   in.dovetail.relaxation_cap = args.integer("relaxation-cap", 0);
@@ -178,10 +197,15 @@ StudyInput parse(const std::vector<std::string>& argv, const std::string& name) 
   in.convergence.cases = in.dovetail.cases;
   in.convergence.eps = in.dovetail.eps;
   in.convergence.tolerance = args.number("tolerance", in.convergence.tolerance);
+  in.rates.cases = in.convergence.cases;
+  in.rates.tolerance = in.convergence.tolerance;
+  in.floor.tolerance = in.convergence.tolerance;
   if (!(in.convergence.tolerance > 0) || !(in.convergence.tolerance < 1))
     throw std::invalid_argument("--tolerance must be in (0, 1)");
   in.threads = args.integer("threads", 2);
   if (in.threads < 1 || in.threads > 64) throw std::invalid_argument("--threads must be in 1..64");
+  in.floor.threads = in.threads;
+  in.floor.verbose = in.verbose;
   in.validity.bisection_steps = args.integer("bisection-steps", 2);
   if (in.validity.bisection_steps < 0 || in.validity.bisection_steps > 20)
     throw std::invalid_argument("--bisection-steps must be in 0..20");
@@ -197,6 +221,9 @@ std::vector<Check> run_asymptotic_studies(const StudyInput& in, bool s2, bool s3
     DovetailSceneCache cache(bulk, in.threads, in.verbose, "convergence");
     const ConvergenceResult samples = run_convergence_study(in.convergence, cache, out);
     checks = samples.checks;
+    if (s2) run_cauchy_rates(in.rates, cache, out, checks);
+    if (s2 && in.floor_study) run_floor_study(in.floor, out, checks);
+    else if (s2) std::printf("\nFloor (S2): skipped (--quick)\n");
     if (s3) run_validity_study(in.validity, samples, in.convergence, cache, out, checks);
     std::printf("\n(%d scenes solved, %d requests answered from memory; %.1f s of solving over %d threads)\n",
                 cache.solves(), cache.reuses(), cache.solve_time_s(), in.threads);

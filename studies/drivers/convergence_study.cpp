@@ -29,13 +29,13 @@ DovetailNodes dovetail_nodes(DovetailLimitBulk& bulk) {
   return n;
 }
 
-namespace {
-
 double predicted_rate(char c) {
   for (const PredictedRate& r : load_predicted_rates())
     if (r.law_case == c) return r.p;
   throw std::runtime_error(std::string("reference/predicted_rates.csv has no case ") + c);
 }
+
+namespace {
 
 void print_case(const CaseConvergence& c, const std::vector<DovetailScene const*>& layers) {
   std::printf("\ncase %c (gamma %g, delta %g): predicted p = %g\n", c.law_case, c.gamma, c.delta, c.p_predicted);
@@ -132,12 +132,9 @@ ConvergenceResult run_convergence_study(const ConvergenceStudyOptions& options, 
     cc.pass = primary && std::abs(primary->p - cc.p_predicted) <= options.rate_tolerance;
     print_case(cc, layers);
 
+    // The rate itself is checked on the Cauchy differences (cauchy_rates.h), where the mesh
+    // floor cancels; the fits above are shown for comparison only.
     const std::string id = std::string("convergence.") + c;
-    char expected[64], got[64];
-    std::snprintf(expected, sizeof expected, "p(%s, floored fit) = %g +- %g", options.primary.c_str(), cc.p_predicted,
-                  options.rate_tolerance);
-    std::snprintf(got, sizeof got, "%s", rate_text(primary).c_str());
-    result.checks.push_back({id + ".rate", cc.pass, expected, got, std::to_string(options.rate_tolerance)});
     const int converged = static_cast<int>(std::count(cc.converged.begin(), cc.converged.end(), true)) + cc.limit_converged;
     result.checks.push_back({id + ".scenes_converged", converged == static_cast<int>(cc.eps.size()) + 1,
                              std::to_string(cc.eps.size() + 1) + " scenes at residual <= " + sci(options.tolerance, 0),
@@ -145,14 +142,15 @@ ConvergenceResult run_convergence_study(const ConvergenceStudyOptions& options, 
     result.cases.push_back(std::move(cc));
   }
 
-  std::printf("\nRates of %s: floored fit e = e_inf + C eps^p (checked against the prediction) and plain fit e = C eps^p\n",
+  std::printf("\nRates of %s fitted to the modes' distance (for comparison: the check uses the Cauchy differences):\n"
+              "floored fit e = e_inf + C eps^p and plain fit e = C eps^p\n",
               options.primary.c_str());
   std::printf("%-4s %-6s %-6s | %-9s | %-11s %-9s %-5s | %-11s\n", "case", "gamma", "delta", "predicted", "p (floor)",
               "e_inf", "", "p (plain)");
   for (const CaseConvergence& c : result.cases) {
     const auto& ff = c.floor_fit.at(options.primary);
     std::printf("%-4c %-6g %-6g | %-9g | %-11s %-9s %-5s | %-11s\n", c.law_case, c.gamma, c.delta, c.p_predicted,
-                rate_text(ff).c_str(), ff ? sci(ff->floor, 1).c_str() : "n/a", c.pass ? "pass" : "FAIL",
+                rate_text(ff).c_str(), ff ? sci(ff->floor, 1).c_str() : "n/a", c.pass ? "near" : "off",
                 rate_text(c.fit.at(options.primary)).c_str());
   }
 

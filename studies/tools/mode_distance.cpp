@@ -56,10 +56,25 @@ Fields fields_of(const SceneRecord& r, const DovetailNodes& n) {
   return f;
 }
 
+// The tenon-top reaction's distance (daN per unit thickness), relative to the reference's
+// reaction or, where that vanishes, to R_ref = σ_ref × the top edge's width: in case (a) the
+// limit tenon is free but for its pull, so it needs no force at all.
+double reaction_distance(const SceneRecord& a, const SceneRecord& b) {
+  const auto ra = a.reactions.find("tenon_top"), rb = b.reactions.find("tenon_top");
+  if (ra == a.reactions.end() || rb == b.reactions.end()) throw std::invalid_argument("mode_distance: no tenon_top reaction");
+  const double R_ref = sigma_ref * 2 * dovetail::mouth_half_width;
+  return (ra->second - rb->second).norm() / std::max(rb->second.norm(), R_ref);
+}
+
+// The status of each S node: the record's own in limit mode, combined over the faces in layer mode.
+const std::vector<int>& combined_status(const SceneRecord& r) {
+  return r.combined_status.empty() ? r.interfaces.front().status : r.combined_status;
+}
+
 }  // namespace
 
 const std::vector<std::string>& distance_quantities() {
-  static const std::vector<std::string> q = {"u",       "u_away",       "jump_N",  "jump_N_away", "jump_T",
+  static const std::vector<std::string> q = {"R_top",  "u",       "u_away",       "jump_N",  "jump_N_away", "jump_T",
                                              "jump_T_away", "sigma_N", "sigma_N_away", "sigma_T", "sigma_T_away"};
   return q;
 }
@@ -101,9 +116,10 @@ ModeDistance mode_distance(const SceneRecord& layer, const SceneRecord& limit, c
   interface("jump_T", a.jump_T, b.jump_T, U);
   interface("sigma_N", a.sigma_N, b.sigma_N, sigma_ref);
   interface("sigma_T", a.sigma_T, b.sigma_T, sigma_ref);
+  d.e["R_top"] = reaction_distance(layer, limit);
 
-  const std::vector<int>& statuses = layer.combined_status.empty() ? layer.interfaces.front().status : layer.combined_status;
-  const std::vector<int>& reference = limit.interfaces.front().status;
+  const std::vector<int>& statuses = combined_status(layer);
+  const std::vector<int>& reference = combined_status(limit);
   for (int k = 0; k < std::min<int>(statuses.size(), reference.size()); ++k) d.status_diff += statuses[k] != reference[k];
   return d;
 }

@@ -12,7 +12,9 @@
 //   jump_T   [u]_T = t·(u_tenon − u_base), scale U;
 //   sigma_N  σ_N on S; in layer mode the stress the layer exerts on the tenon (face S+),
 //            scale σ_ref = μ_m U / L daN/mm² (the stress of an adherent strained by U/L);
-//   sigma_T  σ_T likewise.
+//   sigma_T  σ_T likewise;
+//   R_top    the reaction of the tenon's top edge (the pull's force), |ΔR| / max(|R|, R_ref) with R
+//            the second record's and R_ref = σ_ref × the top edge's width (0.8 L) — global only.
 // Interface norms weigh node k by its tributary length on S; bulk norms weigh nodes equally.
 // The fixed scales matter where the limit field vanishes (σ in case (a), the jumps where the
 // law is rigid): there the distance is relative to the problem's load, not to zero.
@@ -43,7 +45,9 @@ const std::vector<std::string>& distance_quantities();
 
 constexpr double default_corner_radius = 0.1;  // L units: 4 element sizes along S by default
 
-// `layer` may also be a limit-mode record (the distance of a scene to itself is zero, a check).
+// `layer` may also be a limit-mode record (the distance of a scene to itself is zero, a check),
+// and `limit` a layer-mode record: the Cauchy differences of the layer model along ε (SPEC §3
+// S2) are this distance between two layer scenes. Statuses compare the combined ones.
 ModeDistance mode_distance(const SceneRecord& layer, const SceneRecord& limit, const DovetailNodes& nodes,
                            double corner_radius = default_corner_radius);
 

@@ -1,0 +1,130 @@
+#include "studies/drivers/floor_study.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "cases/dovetail/dovetail_scenes.h"
+#include "studies/drivers/convergence_study.h"
+#include "studies/tools/format.h"
+#include "studies/tools/mode_distance.h"
+#include "studies/tools/scene_cache.h"
+
+namespace thinlayer {
+
+namespace {
+
+const double rho = std::pow(10.0, -0.5);  // the rate grid's ratio (cauchy_rates.h)
+
+// One mesh level: the limit scene and the layer at ε and ε·ρ.
+FloorLevel measure_level(const FloorStudyOptions& options, double h, H5Writer* out) {
+  dovetail::MeshOptions mesh;
+  mesh.h_interface = h;
+  mesh.h_far = std::max(dovetail::MeshOptions{}.h_far, h);
+  DovetailLimitBulk bulk(mesh);
+  DovetailSceneCache cache(bulk, options.threads, options.verbose, "convergence floor h " + plain(h));
+  const DovetailSceneDef limit = limit_scene(options.law_case, options.tolerance),
+                         thick = layer_scene(options.law_case, options.eps, options.tolerance),
+                         thin = layer_scene(options.law_case, options.eps * rho, options.tolerance);
+  cache.solve({limit, thick, thin});
+  const DovetailNodes nodes = dovetail_nodes(bulk);
+  const DovetailScene &L = cache.get(limit), &A = cache.get(thick), &B = cache.get(thin);
+  FloorLevel level;
+  level.h = h;
+  level.S_nodes = static_cast<int>(nodes.S.size());
+  level.converged = L.report.converged && A.report.converged && B.report.converged;
+  level.solve_time_s = cache.solve_time_s();
+  const double p = predicted_rate(options.law_case);
+  const ModeDistance floor = mode_distance(B.record, L.record, nodes), step = mode_distance(A.record, B.record, nodes);
+  for (const auto& [q, e] : floor.e) {
+    level.floor[q] = e;
+    level.eps_part[q] = step.e.at(q) * std::pow(rho, p) / (1 - std::pow(rho, p));  // Σ of the geometric tail
+  }
+  if (out) cache.write(*out);
+  return level;
+}
+
+void print(const FloorStudyOptions& options, const FloorResult& r, const std::vector<std::string>& quantities) {
+  std::printf("\nFloor (S2): case %c, the layer at eps %s against the limit law, as h along S shrinks; in brackets the\n"
+              "bound on the eps-part still in it (its Cauchy difference to eps %s, summed over the geometric tail)\n",
+              options.law_case, sci(options.eps * rho, 2).c_str(), sci(options.eps, 0).c_str());
+  std::printf("  %-8s %7s", "h", "S nodes");
+  for (const std::string& q : quantities) std::printf(" %20s", q.c_str());
+  std::printf("\n");
+  for (const FloorLevel& l : r.levels) {
+    std::printf("  %-8g %7d", l.h, l.S_nodes);
+    for (const std::string& q : quantities)
+      std::printf(" %9s (%8s)", sci(l.floor.at(q), 2).c_str(), sci(l.eps_part.at(q), 1).c_str());
+    std::printf("%s\n", l.converged ? "" : "  NOT converged");
+  }
+  std::printf("  %-16s", "rate in h");
+  for (const std::string& q : quantities) std::printf(" %20s", rate_text(r.rate.at(q)).c_str());
+  std::printf("\n");
+}
+
+void write(H5Writer& out, const FloorStudyOptions& options, const FloorResult& r) {
+  const std::string g = "/studies/convergence/floor";
+  std::vector<double> h;
+  std::vector<int> nodes, converged;
+  for (const FloorLevel& l : r.levels) {
+    h.push_back(l.h);
+    nodes.push_back(l.S_nodes);
+    converged.push_back(l.converged);
+  }
+  out.dataset(g + "/h", h);
+  out.dataset(g + "/S_nodes", nodes);
+  out.dataset(g + "/converged", converged);
+  for (const auto& [q, fit] : r.rate) {
+    std::vector<double> floor, eps_part;
+    for (const FloorLevel& l : r.levels) {
+      floor.push_back(l.floor.at(q));
+      eps_part.push_back(l.eps_part.at(q));
+    }
+    out.dataset(g + "/floor_" + q, floor);
+    out.dataset(g + "/eps_part_" + q, eps_part);
+    out.attr(g, "rate_" + q, fit ? fit->p : 0.0);
+    out.attr(g, "rate_" + q + "_stderr", fit ? fit->p_stderr : 0.0);
+    out.attr(g, "fitted_" + q, fit ? 1 : 0);
+  }
+  out.attr(g, "law_case", std::string(1, options.law_case));
+  out.attr(g, "eps", options.eps * rho);
+  out.attr(g, "eps_previous", options.eps);
+}
+
+}  // namespace
+
+FloorResult run_floor_study(const FloorStudyOptions& options, H5Writer* out, std::vector<Check>& checks) {
+  FloorResult r;
+  for (double h : options.h) r.levels.push_back(measure_level(options, h, out));
+  const std::vector<std::string>& quantities = distance_quantities();
+  for (const std::string& q : quantities) {
+    std::vector<double> h, floor;
+    for (const FloorLevel& l : r.levels) {
+      h.push_back(l.h);
+      floor.push_back(l.floor.at(q));
+    }
+    r.rate[q] = fit_power_law(h, floor);
+  }
+  print(options, r, quantities);
+
+  for (const std::string& q : options.checked) {
+    bool shrinks = true, eps_part_small = true, converged = true;
+    std::string got;
+    for (size_t i = 0; i < r.levels.size(); ++i) {
+      const FloorLevel& l = r.levels[i];
+      if (i > 0) shrinks = shrinks && l.floor.at(q) < r.levels[i - 1].floor.at(q);
+      eps_part_small = eps_part_small && l.eps_part.at(q) <= 0.1 * l.floor.at(q);
+      converged = converged && l.converged;
+      got += (got.empty() ? "" : ", ") + sci(l.floor.at(q), 2);
+    }
+    got += "; rate in h " + rate_text(r.rate.at(q));
+    if (!eps_part_small) got += "; eps-part not below a tenth of the floor";
+    if (!converged) got += "; a scene did not converge";
+    checks.push_back({"convergence.floor." + q, shrinks && eps_part_small && converged,
+                      "floor of " + q + " shrinking at every halving of h, its eps-part below a tenth of it", got,
+                      "strictly decreasing"});
+  }
+  if (out) write(*out, options, r);
+  return r;
+}
+
+}  // namespace thinlayer
