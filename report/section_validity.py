@@ -33,30 +33,36 @@ def validity(ctx):
     error = array(g, "error_at_eps_max") if "error_at_eps_max" in g else np.full(len(cases), np.nan)
     steps = array(g, "bisection_steps") if "bisection_steps" in g else np.zeros(len(cases), int)
     converged = array(g, "converged") if "converged" in g else np.ones(len(cases), int)
+    # Files before the validity study measured several quantities have one, named by an attribute.
+    quantity = strings(g["quantity"]) if "quantity" in g else [attr(g, "quantity", "u")] * len(cases)
     out = [how_to_read(
-        "For each case and tolerance τ: ε_max, the largest layer thickness (mm) at which the limit law stays "
-        f"within τ of the layer model, measured on <code>{esc(attr(g, 'quantity', '?'))}</code> (relative "
-        "distance), found by bisection on log ε between the sampled thicknesses. '≥': within τ at every "
-        "sampled ε, so ε_max is only a lower bound; '&lt;': not within τ even at the smallest ε. "
+        "For each case, determined quantity and tolerance τ: ε_max, the largest layer thickness (mm) at which "
+        "the limit law stays within τ of the layer model, measured on that quantity's relative distance "
+        "(<code>u</code> the adherents' displacements, <code>R_top</code> the tenon-top reaction, "
+        "<code>sigma_N</code>, <code>sigma_T</code> the stresses on S), found by bisection on log ε between the "
+        "sampled thicknesses. '≥': within τ at every sampled ε, so ε_max is only a lower bound; '&lt;': not "
+        "within τ even at the smallest ε. "
         f"The paper claims validity up to ε = {num(claim)} mm; the last column says whether this run's "
         "ε_max reaches that (information, not a check).")]
     taus = sorted(set(float(t) for t in tau))
-    rows = []
-    for case in sorted(set(cases)):
-        row = [f"({esc(case)})"]
-        reach = []
-        for t in taus:
-            k = [i for i in range(len(cases)) if cases[i] == case and float(tau[i]) == t]
-            if not k:
-                row.append("—")
-                continue
-            i = k[0]
-            row.append(validity_cell(eps_max[i], status[i], error[i], steps[i], converged[i]))
-            reach.append(f"τ {t:g}: " + reaches(eps_max[i], status[i], claim))
-        row.append("<br>".join(reach))
-        rows.append(row)
-    out.append(table(["case"] + [f"τ = {t:g} ({t * 100:g} %)" for t in taus] + [f"valid at ε = {num(claim)}?"],
-                     rows, left_columns=tuple(range(len(taus) + 2))))
+    for q in list(dict.fromkeys(quantity)):
+        rows = []
+        for case in sorted(set(cases)):
+            row = [f"({esc(case)})"]
+            reach = []
+            for t in taus:
+                k = [i for i in range(len(cases)) if cases[i] == case and float(tau[i]) == t and quantity[i] == q]
+                if not k:
+                    row.append("—")
+                    continue
+                i = k[0]
+                row.append(validity_cell(eps_max[i], status[i], error[i], steps[i], converged[i]))
+                reach.append(f"τ {t:g}: " + reaches(eps_max[i], status[i], claim))
+            row.append("<br>".join(reach))
+            rows.append(row)
+        out.append(f"<h4>on <code>{esc(q)}</code></h4>")
+        out.append(table(["case"] + [f"τ = {t:g} ({t * 100:g} %)" for t in taus] + [f"valid at ε = {num(claim)}?"],
+                         rows, left_columns=tuple(range(len(taus) + 2))))
     return "\n".join(out)
 
 

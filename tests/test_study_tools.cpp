@@ -168,6 +168,26 @@ TEST(ModeDistance, ASceneIsAtDistanceZeroFromItselfAndItsJumpsAreTheStoredOnes) 
   EXPECT_GT(d.e.at("sigma_N"), 0.0);
 }
 
+TEST(ModeDistance, TheReactionIsRelativeToTheLargerOfItsSizeAndTheLoadsScale) {
+  DovetailSceneCache cache(coarse_bulk(), 1, false, "test");
+  const SceneRecord& limit = cache.get(limit_scene('d', 1e-10)).record;
+  const DovetailNodes nodes = dovetail_nodes(coarse_bulk());
+  const Eigen::Vector2d R = limit.reactions.at("tenon_top");
+  // R_ref = σ_ref × the top edge: the stress of an adherent strained by U/L over 0.8 L.
+  const double R_ref = dovetail::mu_m * std::hypot(dovetail::pull_x, dovetail::pull_y) * 0.8;
+  ASSERT_GT(R.norm(), 0.1);  // case (d) holds the pull, with less than R_ref: the glue is soft
+  ASSERT_LT(R.norm(), R_ref);
+  SceneRecord moved = limit;
+  moved.reactions["tenon_top"] = R + Eigen::Vector2d(0.01, 0);
+  EXPECT_NEAR(mode_distance(moved, limit, nodes).e.at("R_top"), 0.01 / R_ref, 1e-14);
+  // Against a reference reaction larger than R_ref, relative to that reaction.
+  SceneRecord big = limit;
+  big.reactions["tenon_top"] = Eigen::Vector2d(0, 100 * R_ref);
+  SceneRecord big_moved = big;
+  big_moved.reactions["tenon_top"] += Eigen::Vector2d(R_ref, 0);
+  EXPECT_NEAR(mode_distance(big_moved, big, nodes).e.at("R_top"), 0.01, 1e-14);
+}
+
 TEST(ModeDistance, LayerApproachesLimitAsEpsShrinks) {
   // Case (d) has finite limits: the distance must shrink between ε = 1e-2 and 1e-3.
   DovetailSceneCache cache(coarse_bulk(), 2, false, "test");

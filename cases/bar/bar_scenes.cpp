@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/io/scene_id_number.h"
 #include "core/solvers/fast_solver.h"
 #include "core/solvers/relaxation_solver.h"
 
@@ -102,7 +103,7 @@ BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, d
   scene.layer_quality = mesh_quality(model.bodies[1].mesh);
   scene.report = run_solver(problem, condensed.get(), solver, options);
   std::ostringstream id;
-  id << bar_scene_id(mesh, law_case, solver) << "-layer-eps" << eps;
+  id << bar_scene_id(mesh, law_case, solver) << "-layer-eps" << scene_id_number(eps);
   SceneRecord& r = scene.record;
   r = record_scene(id.str(), model, problem, scene.report, status_tolerance);
   add_bar_attributes(r, mesh, "layer", law_case, lambda_bar, mu_bar, eps);

@@ -1,9 +1,10 @@
 #include "cases/dovetail/dovetail_scenes.h"
 
-
 #include <chrono>
 #include <cmath>
 #include <sstream>
+
+#include "core/io/scene_id_number.h"
 
 namespace thinlayer {
 
@@ -41,7 +42,7 @@ std::string scene_id(const std::string& mode, const std::string& law_case, const
   id << "dovetail-" << mode << "-";
   if (law_case.empty()) id << "g" << e.gamma << "-d" << e.delta;
   else id << law_case;
-  if (mode == "layer") id << "-eps" << eps;
+  if (mode == "layer") id << "-eps" << scene_id_number(eps);
   id << "-h" << mesh.h_interface;
   if (bulk.friction() != dovetail::friction) id << "-f" << bulk.friction();
   id << "-" << to_string(solver);

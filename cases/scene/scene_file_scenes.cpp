@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/io/scene_id_number.h"
 
 namespace thinlayer {
 
@@ -35,7 +36,7 @@ void add_attributes(SceneRecord& r, const SceneSpec& spec, const std::string& mo
 std::string scene_id(const SceneSpec& spec, const std::string& mode, double eps, SolverKind solver) {
   std::ostringstream id;
   id << spec.name << "-" << mode;
-  if (mode == "layer") id << "-eps" << eps;
+  if (mode == "layer") id << "-eps" << scene_id_number(eps);
   id << "-" << to_string(solver);
   return id.str();
 }

@@ -222,9 +222,13 @@ std::vector<Check> run_asymptotic_studies(const StudyInput& in, bool s2, bool s3
     const ConvergenceResult samples = run_convergence_study(in.convergence, cache, out);
     checks = samples.checks;
     if (s2) run_cauchy_rates(in.rates, cache, out, checks);
-    if (s2 && in.floor_study) run_floor_study(in.floor, out, checks);
+    if (s2 && in.floor_study) run_floor_study(in.floor, cache, out, checks);
     else if (s2) std::printf("\nFloor (S2): skipped (--quick)\n");
-    if (s3) run_validity_study(in.validity, samples, in.convergence, cache, out, checks);
+    if (s3) {
+      ValidityStudyOptions validity = in.validity;
+      validity.extra_eps = in.rates.eps;  // solved by S2's rates when it ran; else solved here
+      run_validity_study(validity, samples, in.convergence, cache, out, checks);
+    }
     std::printf("\n(%d scenes solved, %d requests answered from memory; %.1f s of solving over %d threads)\n",
                 cache.solves(), cache.reuses(), cache.solve_time_s(), in.threads);
     if (out) cache.write(*out);

@@ -29,6 +29,7 @@ CaseCauchy measure_case(char law_case, const CauchyStudyOptions& options, Doveta
     c.converged.push_back(scenes.back()->report.converged);
     c.iterations.push_back(scenes.back()->report.iterations);
     c.residual.push_back(scenes.back()->report.residual.value());
+    c.layer_ids.push_back(scenes.back()->record.id);
   }
   std::map<std::string, std::vector<double>> difference;
   for (size_t k = 0; k + 1 < scenes.size(); ++k) {
@@ -74,6 +75,7 @@ void write_case(H5Writer& out, const CaseCauchy& c, const CauchyStudyOptions& op
   out.dataset(g + "/iterations", c.iterations);
   out.dataset(g + "/residual", c.residual);
   out.dataset(g + "/status_changes", c.status_changes);
+  out.dataset(g + "/layer_scene", c.layer_ids);
   for (const auto& [q, r] : c.rate) {
     out.dataset(g + "/d_" + q, r.difference);
     out.dataset(g + "/in_tail_" + q, std::vector<int>(r.in_tail.begin(), r.in_tail.end()));

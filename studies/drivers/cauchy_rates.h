@@ -38,6 +38,7 @@ struct CaseCauchy {
   std::vector<bool> converged;              // each grid scene at the tolerance
   std::vector<int> iterations;              // each grid scene's solver steps
   std::vector<double> residual;             // each grid scene's SPEC residual
+  std::vector<std::string> layer_ids;       // each grid scene's id under /scenes
   std::vector<int> status_changes;          // S nodes whose combined status differs, ε_k against ε_{k+1}
   std::map<std::string, CauchyRate> rate;   // per quantity (mode_distance.h)
   std::map<std::string, bool> pass;         // per checked quantity

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <stdexcept>
 
 #include "cases/dovetail/dovetail_scenes.h"
 #include "studies/drivers/convergence_study.h"
@@ -13,40 +15,46 @@ namespace thinlayer {
 
 namespace {
 
-const double rho = std::pow(10.0, -0.5);  // the rate grid's ratio (cauchy_rates.h)
-
-// One mesh level: the limit scene and the layer at ε and ε·ρ.
-FloorLevel measure_level(const FloorStudyOptions& options, double h, H5Writer* out) {
-  dovetail::MeshOptions mesh;
+// One mesh level: the limit scene and the layer at ε and ε·ρ, in the shared cache if it holds
+// this mesh (its scenes are written with the rest of it), else in a cache of the level's own.
+FloorLevel measure_level(const FloorStudyOptions& options, double h, DovetailSceneCache& shared, H5Writer* out) {
+  dovetail::MeshOptions mesh = shared.bulk().options();
   mesh.h_interface = h;
-  mesh.h_far = std::max(dovetail::MeshOptions{}.h_far, h);
-  DovetailLimitBulk bulk(mesh);
-  DovetailSceneCache cache(bulk, options.threads, options.verbose, "convergence floor h " + plain(h));
+  mesh.h_far = std::max(mesh.h_far, h);
+  const bool own = mesh.h_interface != shared.bulk().options().h_interface || mesh.h_far != shared.bulk().options().h_far;
+  std::unique_ptr<DovetailLimitBulk> bulk;
+  std::unique_ptr<DovetailSceneCache> own_cache;
+  if (own) {
+    bulk = std::make_unique<DovetailLimitBulk>(mesh);
+    own_cache = std::make_unique<DovetailSceneCache>(*bulk, options.threads, options.verbose, "convergence floor h " + plain(h));
+  }
+  DovetailSceneCache& cache = own ? *own_cache : shared;
+  cache.set_progress_tag("convergence floor h " + plain(h));
   const DovetailSceneDef limit = limit_scene(options.law_case, options.tolerance),
-                         thick = layer_scene(options.law_case, options.eps, options.tolerance),
-                         thin = layer_scene(options.law_case, options.eps * rho, options.tolerance);
+                         thick = layer_scene(options.law_case, options.eps.at(0), options.tolerance),
+                         thin = layer_scene(options.law_case, options.eps.at(1), options.tolerance);
   cache.solve({limit, thick, thin});
-  const DovetailNodes nodes = dovetail_nodes(bulk);
+  const DovetailNodes nodes = dovetail_nodes(cache.bulk());
   const DovetailScene &L = cache.get(limit), &A = cache.get(thick), &B = cache.get(thin);
   FloorLevel level;
   level.h = h;
   level.S_nodes = static_cast<int>(nodes.S.size());
   level.converged = L.report.converged && A.report.converged && B.report.converged;
-  level.solve_time_s = cache.solve_time_s();
-  const double p = predicted_rate(options.law_case);
+  level.solve_time_s = own ? cache.solve_time_s() : 0.0;
+  const double p = predicted_rate(options.law_case), rho = options.eps.at(1) / options.eps.at(0);
   const ModeDistance floor = mode_distance(B.record, L.record, nodes), step = mode_distance(A.record, B.record, nodes);
   for (const auto& [q, e] : floor.e) {
     level.floor[q] = e;
     level.eps_part[q] = step.e.at(q) * std::pow(rho, p) / (1 - std::pow(rho, p));  // Σ of the geometric tail
   }
-  if (out) cache.write(*out);
+  if (out && own) cache.write(*out);
   return level;
 }
 
 void print(const FloorStudyOptions& options, const FloorResult& r, const std::vector<std::string>& quantities) {
   std::printf("\nFloor (S2): case %c, the layer at eps %s against the limit law, as h along S shrinks; in brackets the\n"
               "bound on the eps-part still in it (its Cauchy difference to eps %s, summed over the geometric tail)\n",
-              options.law_case, sci(options.eps * rho, 2).c_str(), sci(options.eps, 0).c_str());
+              options.law_case, sci(options.eps.at(1), 2).c_str(), sci(options.eps.at(0), 0).c_str());
   std::printf("  %-8s %7s", "h", "S nodes");
   for (const std::string& q : quantities) std::printf(" %20s", q.c_str());
   std::printf("\n");
@@ -86,15 +94,18 @@ void write(H5Writer& out, const FloorStudyOptions& options, const FloorResult& r
     out.attr(g, "fitted_" + q, fit ? 1 : 0);
   }
   out.attr(g, "law_case", std::string(1, options.law_case));
-  out.attr(g, "eps", options.eps * rho);
-  out.attr(g, "eps_previous", options.eps);
+  out.attr(g, "eps", options.eps.at(1));
+  out.attr(g, "eps_previous", options.eps.at(0));
 }
 
 }  // namespace
 
-FloorResult run_floor_study(const FloorStudyOptions& options, H5Writer* out, std::vector<Check>& checks) {
+FloorResult run_floor_study(const FloorStudyOptions& options, DovetailSceneCache& shared, H5Writer* out,
+                            std::vector<Check>& checks) {
+  if (options.eps.size() != 2 || !(options.eps[1] < options.eps[0]))
+    throw std::invalid_argument("floor study: a pair of thicknesses, the second the thinner");
   FloorResult r;
-  for (double h : options.h) r.levels.push_back(measure_level(options, h, out));
+  for (double h : options.h) r.levels.push_back(measure_level(options, h, shared, out));
   const std::vector<std::string>& quantities = distance_quantities();
   for (const std::string& q : quantities) {
     std::vector<double> h, floor;
