@@ -66,14 +66,15 @@ TEST_F(Verify, AWrongReferenceValueFailsInAllThreeOutputs) {
     }
   EXPECT_TRUE(found);
 
-  // Every study of the run is in the file: S2's distances, S3's table, S4's crossings, S5.
+  // Every study of the run is in the file: S2's distances and rates, S3's table, S4's crossings, S5.
   EXPECT_EQ(h5.read_doubles("/studies/convergence/d/e_u_away").size(), 3u);
+  EXPECT_EQ(h5.read_doubles("/studies/convergence/d/cauchy/d_R_top").size(), 2u);  // 3 thicknesses of --rate-eps
   const auto validity = h5.read_strings("/studies/validity/status");
   const auto tau = h5.read_doubles("/studies/validity/tau");
   const auto eps_max = h5.read_doubles("/studies/validity/eps_max");
   const auto eps_beyond = h5.read_doubles("/studies/validity/eps_beyond");
   const auto error = h5.read_doubles("/studies/validity/error_at_eps_max");
-  ASSERT_EQ(validity.size(), 2u);  // case d × τ ∈ {1 %, 5 %}
+  ASSERT_EQ(validity.size(), 8u);  // case d × {u, R_top, sigma_N, sigma_T} × τ ∈ {1 %, 5 %}
   for (size_t i = 0; i < validity.size(); ++i) {
     EXPECT_TRUE(validity[i] == "found" || validity[i] == "at_least" || validity[i] == "below_range") << validity[i];
     if (validity[i] != "below_range") {
