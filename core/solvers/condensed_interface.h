@@ -1,8 +1,12 @@
 #pragma once
 // The bulk condensed onto the interface. The supported bodies are factored once (CHOLMOD):
-//   W = B_A K_AA⁻¹ B_Aᵀ   (the Delassus operator, mm/daN),   g₀ = B_A K_AA⁻¹ F_A + g_D  (mm),
-// W from the factor of K_AA's Schur complement onto the interface DOFs (ordered last in the
-// factorisation, see SparseCholesky::trailing_factor), at the cost of one factorisation.
+//   W = B_A K_AA⁻¹ B_Aᵀ   (the Delassus operator, mm/daN),   g₀ = B_A K_AA⁻¹ F_A + g_D  (mm).
+// The supported bodies share no stiffness, so K_AA is block-diagonal and each connected
+// body b is factored on its own, its interface DOFs Γ_b ordered last:
+//   W = Σ_b B_b S_b⁻¹ B_bᵀ,   S_b = K_b's Schur complement onto Γ_b,
+// with S_b⁻¹ from the trailing block of body b's factor (SparseCholesky::trailing_factor).
+// One factor per body keeps each body's ordering free of the other's Γ, and each S_b⁻¹ is
+// |Γ_b|³, where one factor of all the bodies gives a |Γ| × |Γ| block solved against 2m columns.
 // A floating body (the thin layer, Body::floating) is never factored whole — its stiffness is
 // singular when its contacts open. Its interior is condensed onto its interface DOFs w:
 //   S w = f_L + B_Lᵀ r,   S = K_ff - K_fi K_ii⁻¹ K_if,   f_L = F_f - K_fi K_ii⁻¹ F_i,
@@ -40,8 +44,17 @@ class CondensedInterface {
   double rcond() const;
 
  private:
-  std::vector<int> supported_, floating_face_, floating_interior_;  // free DOF indices
-  std::shared_ptr<SparseCholesky> factor_supported_, factor_interior_;
+  // A connected supported body: its free DOFs (ascending) and its factor, Γ_b last.
+  struct SupportedBody {
+    std::vector<int> dofs;
+    std::shared_ptr<SparseCholesky> factor;
+  };
+  // Factors one body, adds its part to W_ and g0_, and keeps its factor.
+  void condense_body(const ContactProblem& problem, std::vector<int> dofs, const std::vector<bool>& on_interface);
+
+  std::vector<SupportedBody> supported_;
+  std::vector<int> floating_face_, floating_interior_;  // free DOF indices
+  std::shared_ptr<SparseCholesky> factor_interior_;
   Eigen::SparseMatrix<double> K_if_;
   Eigen::MatrixXd W_, B_L_, S_;
   Eigen::VectorXd g0_, f_L_;
