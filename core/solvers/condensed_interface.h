@@ -8,7 +8,8 @@
 // Each S_b⁻¹ costs (2/3)|Γ_b|³ (LAPACK dpotri), where one factor of all the bodies left one
 // |Γ| × |Γ| trailing block to solve against all 2m columns of B_Γᵀ and a product Zᵀ Z: for the
 // dovetail's two bodies at h = 0.0125 (|Γ_b| = 370, 2m = 370) 2·3.4e7 flops against 3e8.
-// The factorisations with Γ_b last remain the bulk of the cost (about 1.3 × a plain one).
+// The factorisations with Γ_b last remain the bulk of the cost: 1.3–1.45 × a plain
+// factorisation of the same body (CAMD with Γ_b last: twice its fill, 4–6 × its flops).
 // A floating body (the thin layer, Body::floating) is never factored whole — its stiffness is
 // singular when its contacts open. Its interior is condensed onto its interface DOFs w:
 //   S w = f_L + B_Lᵀ r,   S = K_ff - K_fi K_ii⁻¹ K_if,   f_L = F_f - K_fi K_ii⁻¹ F_i,
