@@ -9,7 +9,8 @@
 // |Γ| × |Γ| trailing block to solve against all 2m columns of B_Γᵀ and a product Zᵀ Z: for the
 // dovetail's two bodies at h = 0.0125 (|Γ_b| = 370, 2m = 370) 2·3.4e7 flops against 3e8.
 // The factorisations with Γ_b last remain the bulk of the cost: 1.3–1.45 × a plain
-// factorisation of the same body (CAMD with Γ_b last: twice its fill, 4–6 × its flops).
+// factorisation of the same body (CAMD with Γ_b last: 1.6–1.9 × its fill, 3.6–5.7 × its
+// flops at h = 0.0125; METIS on the interior saves flops but costs more to order).
 // A floating body (the thin layer, Body::floating) is never factored whole — its stiffness is
 // singular when its contacts open. Its interior is condensed onto its interface DOFs w:
 //   S w = f_L + B_Lᵀ r,   S = K_ff - K_fi K_ii⁻¹ K_if,   f_L = F_f - K_fi K_ii⁻¹ F_i,
