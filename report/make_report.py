@@ -32,6 +32,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import section_bar_profiles  # noqa: E402
 import section_convergence  # noqa: E402
+import section_convergence_rates  # noqa: E402
 import section_header  # noqa: E402
 import section_layer_stiffness  # noqa: E402
 import section_scene_files  # noqa: E402
@@ -63,6 +64,7 @@ SECTIONS = (
     ("bar", "Figs. 13–14", section_bar_profiles.render),
     ("stiffness", "Figs. 6–7", section_layer_stiffness.render),
     ("convergence", "Convergence", section_convergence.render),
+    ("rates", "Rates", section_convergence_rates.render),
     ("validity", "Validity", section_validity.render),
     ("timing", "Run time", section_timing.render),
     ("stress", "Stress tests", section_stress.render),

@@ -167,6 +167,35 @@ def write_convergence_study(f, case, limit_id, layer_ids, eps, p_fit, passed):
     c.create_dataset("layer_scene", data=strings(layer_ids), dtype=STR)
 
 
+def write_cauchy_rates(f, case, p, passed, measurable=True):
+    """The rate grid of one case: differences C ε_k^p, all converged (or none, not measurable)."""
+    eps = 10.0 ** (-np.arange(8, 13) / 2)
+    c = f["studies/convergence"][case].create_group("cauchy")
+    c["eps"] = eps
+    c["converged"] = np.full(len(eps), int(measurable), np.int32)
+    c["iterations"] = np.full(len(eps), 30, np.int32)
+    c["residual"] = np.full(len(eps), 1e-12 if measurable else 1e-6)
+    c["status_changes"] = np.zeros(len(eps) - 1, np.int32)
+    checked = ("R_top", "u", "u_away", "sigma_N_away", "sigma_T_away")
+    for q in checked:
+        c["d_" + q] = 0.02 * eps[:-1] ** p
+        c["in_tail_" + q] = np.full(len(eps) - 1, int(measurable), np.int32)
+        c.attrs.update({"p_" + q: p if measurable else 0.0, f"p_{q}_stderr": 0.01, "C_" + q: 0.02,
+                        "points_" + q: 4 if measurable else 0, "fitted_" + q: int(measurable),
+                        "pass_" + q: int(passed)})
+    c.attrs.update(dict(checked=",".join(checked), p_predicted=0.5, grid_ratio=10 ** -0.5))
+
+
+def write_floor(f):
+    g = f["studies/convergence"].create_group("floor")
+    h = np.array([0.1, 0.05, 0.025])
+    g["h"], g["S_nodes"], g["converged"] = h, np.array([25, 45, 93], np.int32), np.ones(3, np.int32)
+    for q in ("R_top", "u", "sigma_N"):
+        g["floor_" + q], g["eps_part_" + q] = 0.03 * h, np.full(3, 1e-6)
+        g.attrs.update({"rate_" + q: 1.0, f"rate_{q}_stderr": 0.01, "fitted_" + q: 1})
+    g.attrs.update(dict(law_case="d", eps=10 ** -5.5, eps_previous=1e-5))
+
+
 def write_validity_and_thresholds(f):
     v = f.create_group("studies/validity")
     v.create_dataset("case", data=strings(["b", "b", "d", "d"]), dtype=STR)
@@ -292,6 +321,9 @@ def write_results(path, layout=True, failing=False, complete=True, version=2):
             limit_id, layer_ids = write_dovetail_scenes(f, case, gamma, delta, lam, 5400.0, eps)
             write_convergence_study(f, case, limit_id, layer_ids, eps, p_fit=1.0 if case == "d" else 0.5,
                                     passed=True)
+        write_cauchy_rates(f, "b", 0.5, passed=True)
+        write_cauchy_rates(f, "d", 0.0, passed=False, measurable=False)
+        write_floor(f)
         write_validity_and_thresholds(f)
         write_timing(f)
         write_timing_extras(f)
@@ -364,6 +396,13 @@ class ReportTest(unittest.TestCase):
         # The scene-file study: its validity table, a bisected and a lower-bound row.
         self.assertIn("<b>0.0316</b>", html)
         self.assertIn("<b>≥ 0.1</b>", html)
+        # S2's rates: a passing case, a case with no converged tail, the floor against h.
+        self.assertIn("figures/convergence_cauchy.png", images)
+        self.assertIn("figures/convergence_floor.png", images)
+        rates = html[html.index('id="rates"'):]
+        self.assertRegex(rates, r'<tr class="failrow"><td[^>]*>\(d\)</td>.*?not measurable <span class="fail">FAIL</span>')
+        self.assertRegex(rates, r'<tr><td[^>]*>\(b\)</td><td[^>]*>0.5</td><td[^>]*>0.50 ± 0.01 <span class="pass">PASS</span>')
+        self.assertIn("3.00e-03 (1.0e-06)", rates)  # the floor at h = 0.1 and its ε-part
         self.assertNothingLeftBehind()
 
     def test_without_layout_attributes_the_file_is_called_foreign(self):
@@ -450,7 +489,8 @@ class ReportTest(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(os.path.join(out, "index.html"), encoding="utf-8") as page:
             html = page.read()
-        for absent in ("/studies/convergence", "/studies/validity", "/studies/thresholds", "/studies/timing",
+        for absent in ("/studies/convergence", "/studies/convergence/&lt;case&gt;/cauchy", "/studies/validity",
+                       "/studies/thresholds", "/studies/timing",
                        "/studies/stress",
                        "/environment", "/studies/table3/sensitivity"):
             self.assertRegex(html, re.escape(absent) + r"[^<]*\): not in this results file")
