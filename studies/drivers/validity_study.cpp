@@ -76,12 +76,12 @@ std::vector<ValidityRow> run_validity_study(const ValidityStudyOptions& options,
   for (const CaseConvergence& c : samples.cases)
     for (double eps : options.extra_eps) extra.push_back(layer_scene(c.law_case, eps, convergence.tolerance));
   cache.solve(extra);
-  for (const CaseConvergence& sampled : samples.cases)
-    for (const std::string& q : options.quantities) {
-      const CaseConvergence c =
-          with_samples(sampled, options.extra_eps, convergence.tolerance, cache, nodes, convergence.corner_radius);
+  for (const CaseConvergence& sampled : samples.cases) {
+    const CaseConvergence c =
+        with_samples(sampled, options.extra_eps, convergence.tolerance, cache, nodes, convergence.corner_radius);
+    for (const std::string& q : options.quantities)
       for (double tau : options.taus) jobs.push_back(initial(c, tau, q));
-    }
+  }
 
   // Bisection in rounds: the midpoints of every open bracket are solved together (in parallel).
   for (int step = 0; step < options.bisection_steps; ++step) {
