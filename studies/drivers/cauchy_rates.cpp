@@ -1,10 +1,8 @@
 #include "studies/drivers/cauchy_rates.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "cases/dovetail/dovetail.h"
 #include "studies/drivers/convergence_study.h"
 #include "studies/tools/format.h"
 #include "studies/tools/mode_distance.h"
@@ -16,7 +14,7 @@ namespace {
 // The columns printed per case (all quantities go to the file).
 const std::vector<std::string> printed = {"R_top", "u", "u_away", "sigma_N", "sigma_N_away", "sigma_T", "sigma_T_away"};
 
-// Step 1: the case's grid scenes, their differences, and the rate of each quantity.
+// One case: its grid scenes, their neighbours' differences, and the rate of each quantity.
 CaseCauchy measure_case(char law_case, const CauchyStudyOptions& options, DovetailSceneCache& cache,
                         const DovetailNodes& nodes) {
   CaseCauchy c;
