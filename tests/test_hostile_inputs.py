@@ -148,6 +148,10 @@ def refused_inputs():
     refused("--eps 50 on the 40 mm bar", layer(["--eps", "50"]), "no thin layer for the bar")
     refused("--eps 1e300 on the dovetail", layer(["--eps", "1e300"], "dovetail"), "no thin layer for the dovetail")
     refused("--eps 0.5 in a dovetail study", ["study", "dovetail", "--eps", "0.5"], "no thin layer")
+    refused("--rate-eps that grows", ["study", "convergence", "--rate-eps", "1e-5,1e-4,1e-6"], "the grid must decrease")
+    refused("--rate-eps of one thickness", ["study", "convergence", "--rate-eps", "1e-5"], "at least two")
+    refused("--rate-eps for a study without rates", ["study", "dovetail", "--rate-eps", "1e-4,1e-5"],
+            "--rate-eps does not apply")
     refused("--eps 0", layer(["--eps", "0"]), "--eps must be finite and > 0")
     # Unwritable outputs: exit 2 from every command, nothing created, nothing replaced.
     refused("--out onto a FIFO", solve(["--out", "fifo.h5"]), "FIFO")
