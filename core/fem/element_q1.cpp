@@ -7,8 +7,7 @@
 
 namespace thinlayer {
 
-Eigen::Matrix<double, 3, 8> q1_strain_matrix(const Coords4& xy, double xi, double eta, double& detJ) {
-  // Reference nodes (-1,-1), (1,-1), (1,1), (-1,1), matching a counter-clockwise cell.
+Eigen::Matrix<double, 2, 4> q1_reference_gradients(double xi, double eta) {
   static const double xi_n[4] = {-1, 1, 1, -1};
   static const double eta_n[4] = {-1, -1, 1, 1};
   Eigen::Matrix<double, 2, 4> dN_ref;
@@ -16,6 +15,11 @@ Eigen::Matrix<double, 3, 8> q1_strain_matrix(const Coords4& xy, double xi, doubl
     dN_ref(0, a) = 0.25 * xi_n[a] * (1 + eta_n[a] * eta);
     dN_ref(1, a) = 0.25 * eta_n[a] * (1 + xi_n[a] * xi);
   }
+  return dN_ref;
+}
+
+Eigen::Matrix<double, 3, 8> q1_strain_matrix(const Coords4& xy, double xi, double eta, double& detJ) {
+  const Eigen::Matrix<double, 2, 4> dN_ref = q1_reference_gradients(xi, eta);
   const Eigen::Matrix2d J = dN_ref * xy;  // J(i,j) = d x_j / d ref_i
   detJ = J.determinant();
   if (!(detJ > 0)) throw std::runtime_error("Q1 element with non-positive Jacobian (inverted or degenerate cell)");

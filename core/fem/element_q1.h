@@ -16,6 +16,10 @@ Matrix8d q1_stiffness(const Coords4& xy, const Eigen::Matrix3d& D);
 Matrix8d q1_stiffness_selective(const Coords4& xy, const Eigen::Matrix3d& D_volumetric,
                                 const Eigen::Matrix3d& D_rest);
 
+// Gradients of the four shape functions with respect to the reference coordinates (xi, eta),
+// one column per node (reference nodes (-1,-1), (1,-1), (1,1), (-1,1): a counter-clockwise cell).
+Eigen::Matrix<double, 2, 4> q1_reference_gradients(double xi, double eta);
+
 // Strain-displacement matrix B (3×8) at reference point (xi, eta) ∈ [-1,1]²; detJ returned.
 Eigen::Matrix<double, 3, 8> q1_strain_matrix(const Coords4& xy, double xi, double eta, double& detJ);
 

@@ -1,5 +1,6 @@
 #include "core/fem/linear_system.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/fem/element_p1.h"
@@ -111,6 +112,24 @@ LinearSystem::LinearSystem(const Model& model)
     }
   K_ff_.resize(num_free, num_free);
   K_ff_.setFromTriplets(ff.begin(), ff.end());
+
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) {
+    const Body& body = model.bodies[b];
+    if (!body.floating) continue;
+    const std::optional<BandLayout> layout = band_layout(body.mesh);
+    if (!layout) continue;
+    FloatingBand band{b, *layout, column_stiffness(body.mesh, *layout, body.material, body.selective_integration), {}, {}};
+    const int offset = model.dof_offset(b);
+    Eigen::VectorXd nodal_load(2 * body.mesh.num_nodes());
+    for (int dof = 0; dof < 2 * body.mesh.num_nodes(); ++dof) {
+      band.free_dof.push_back(free_index_[offset + dof]);
+      nodal_load[dof] = F_ext_[offset + dof];
+    }
+    // A floating body has no support, so all its DOFs are free and its load is its own.
+    if (*std::min_element(band.free_dof.begin(), band.free_dof.end()) < 0) continue;
+    band.F = column_forces(nodal_load, *layout);
+    floating_bands_.push_back(std::move(band));
+  }
 }
 
 Eigen::VectorXd LinearSystem::scatter(const Eigen::VectorXd& free_values) const {

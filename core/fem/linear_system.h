@@ -8,11 +8,22 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "core/fem/column_basis.h"
 #include "core/fem/model.h"
 
 namespace thinlayer {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// A floating body whose mesh is a layer band: its stiffness and loads in the column basis
+// (core/fem/column_basis.h), which the solvers condense instead of the nodal stiffness.
+struct FloatingBand {
+  int body = 0;
+  BandLayout layout;
+  SparseMatrix K;              // column basis, daN/mm
+  Eigen::VectorXd F;           // column basis, daN
+  std::vector<int> free_dof;   // the free index of the body's nodal DOF 2·node + c
+};
 
 class LinearSystem {
  public:
@@ -43,6 +54,8 @@ class LinearSystem {
   std::map<std::string, Eigen::Vector2d> reactions(const Eigen::VectorXd& u_full,
                                                    const Eigen::VectorXd& interface_force_full) const;
   const Eigen::VectorXd& external_force() const { return F_ext_; }  // full, daN
+  // The floating bodies that are layer bands (every other floating body is condensed nodally).
+  const std::vector<FloatingBand>& floating_bands() const { return floating_bands_; }
 
  private:
   SparseMatrix K_full_;
@@ -55,6 +68,7 @@ class LinearSystem {
   std::vector<std::string> body_names_;
   SparseMatrix K_ff_;
   Eigen::VectorXd F_f_;
+  std::vector<FloatingBand> floating_bands_;
 };
 
 // Building blocks, exposed for the tests.

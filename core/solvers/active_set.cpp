@@ -5,6 +5,8 @@
 
 #include <Eigen/Dense>
 
+#include "core/linalg/equilibrated_solve.h"
+
 namespace thinlayer {
 
 
@@ -49,29 +51,6 @@ std::vector<Active> guess_statuses(const Condensed& c, const Eigen::VectorXd& r,
     }
   }
   return s;
-}
-
-// Solves A x = b for a matrix that mixes compliances (mm/daN), stiffnesses (daN/mm) and
-// plain coefficients, whose scales can differ by 1e15 in the layer mode: equilibrate rows and
-// columns (a few Ruiz sweeps), factor once, then refine the solution against the original A.
-Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* rcond) {
-  const Eigen::Index n = A.rows();
-  Eigen::VectorXd row = Eigen::VectorXd::Ones(n), col = Eigen::VectorXd::Ones(n);
-  Eigen::MatrixXd M = A;
-  for (int sweep = 0; sweep < 5; ++sweep) {
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double r = M.row(i).cwiseAbs().maxCoeff(), c = M.col(i).cwiseAbs().maxCoeff();
-      if (r > 0) row[i] /= std::sqrt(r);
-      if (c > 0) col[i] /= std::sqrt(c);
-    }
-    M = row.asDiagonal() * A * col.asDiagonal();
-  }
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
-  if (rcond) *rcond = lu.rcond();
-  Eigen::VectorXd x = col.asDiagonal() * lu.solve(row.asDiagonal() * b);
-  for (int refinement = 0; refinement < 3; ++refinement)
-    x += col.asDiagonal() * lu.solve(row.asDiagonal() * (b - A * x));
-  return x;
 }
 
 int floating_unknowns(const Condensed& c) { return static_cast<int>(c.S.rows()); }

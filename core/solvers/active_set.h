@@ -34,10 +34,6 @@ Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, 
 // The active-set guess from the current iterate: the sign pattern of the natural map.
 std::vector<Active> guess_statuses(const Condensed& c, const Eigen::VectorXd& r, const Eigen::VectorXd& d);
 
-// Solves A x = b for a matrix that mixes compliances and stiffnesses: Ruiz-equilibrated LU and
-// iterative refinement against the original A. rcond, if given, receives LU's estimate.
-Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* rcond = nullptr);
-
 int floating_unknowns(const Condensed& c);
 
 // d = g₀ + (W + C) r + B_L w.

@@ -88,45 +88,19 @@ std::vector<std::vector<int>> supported_bodies(const LinearSystem& system) {
 CondensedInterface::CondensedInterface(const ContactProblem& problem) {
   const auto start = std::chrono::steady_clock::now();
   const LinearSystem& system = problem.system();
-  const Eigen::SparseMatrix<double>& K = system.K();
   const Eigen::SparseMatrix<double>& B = problem.B();
   const int n = system.num_free();
 
   std::vector<bool> on_interface(n, false);
   for (int c = 0; c < B.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(B, c); it; ++it) on_interface[it.col()] = true;
-  for (int i = 0; i < n; ++i) {
-    if (!system.floating(i)) continue;
-    if (on_interface[i]) floating_face_.push_back(i);
-    else floating_interior_.push_back(i);
-  }
 
   const int rows = static_cast<int>(B.rows());
   W_ = Eigen::MatrixXd::Zero(rows, rows);
   g0_ = problem.jump_offset();
   for (std::vector<int>& dofs : supported_bodies(system)) condense_body(problem, std::move(dofs), on_interface);
   W_ = 0.5 * (W_ + W_.transpose()).eval();  // symmetric up to round-off; make it exact
-
-  if (!floating_face_.empty()) {
-    B_L_ = Eigen::MatrixXd(block(B, all_indices(rows), floating_face_));
-    S_ = Eigen::MatrixXd(block(K, floating_face_, floating_face_));
-    f_L_ = take(system.F(), floating_face_);
-    if (!floating_interior_.empty()) {
-      // The interior with its faces held is an ordinary supported problem: factor it.
-      // (Not the trailing-factor route of the supported part, with the faces last and a shift
-      // α on them, S = L_ff L_ffᵀ - αI: tried, it moved the bar's layer scene at ε = 1e-4 by
-      // 6e-8 relative through the layer's soft modes, and the interior being a few rows of
-      // nodes thick, its |f| banded solves cost less than the dense |f| × |f| factor.)
-      factor_interior_ = std::make_shared<SparseCholesky>(block(K, floating_interior_, floating_interior_));
-      K_if_ = block(K, floating_interior_, floating_face_);
-      const Eigen::MatrixXd Y = factor_interior_->solve(Eigen::MatrixXd(K_if_));  // K_ii⁻¹ K_if
-      S_ -= K_if_.transpose() * Y;
-      S_ = 0.5 * (S_ + S_.transpose()).eval();
-      f_L_ -= K_if_.transpose() * factor_interior_->solve(Eigen::VectorXd(take(system.F(), floating_interior_)));
-    }
-  } else if (!floating_interior_.empty()) {
-    throw std::runtime_error("singular system: a floating body touches no interface");
-  }
+  condense_floating(problem, on_interface);
   setup_time_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -161,15 +135,57 @@ void CondensedInterface::condense_body(const ContactProblem& problem, std::vecto
   supported_.push_back(std::move(body));
 }
 
+void CondensedInterface::condense_floating(const ContactProblem& problem, const std::vector<bool>& on_interface) {
+  const LinearSystem& system = problem.system();
+  std::vector<bool> is_band(system.num_bodies(), false);
+  for (const FloatingBand& band : system.floating_bands()) {
+    is_band[band.body] = true;
+    floating_.push_back(FloatingCondensation::band(band, on_interface));
+  }
+  std::vector<std::vector<int>> nodal(system.num_bodies());  // the other floating bodies' free DOFs
+  for (int i = 0; i < system.num_free(); ++i)
+    if (system.floating(i) && !is_band[system.body_of(i)]) nodal[system.body_of(i)].push_back(i);
+  for (const std::vector<int>& dofs : nodal) {
+    if (dofs.empty()) continue;
+    if (std::none_of(dofs.begin(), dofs.end(), [&](int i) { return static_cast<bool>(on_interface[i]); }))
+      throw std::runtime_error("singular system: a floating body touches no interface");
+    floating_.push_back(FloatingCondensation::nodal(system, dofs, on_interface));
+  }
+  int size = 0;
+  for (const FloatingCondensation& f : floating_) size += f.size();
+  if (!size) return;
+  const Eigen::SparseMatrix<double>& B = problem.B();
+  B_L_ = Eigen::MatrixXd::Zero(B.rows(), size);
+  S_ = Eigen::MatrixXd::Zero(size, size);
+  f_L_ = Eigen::VectorXd::Zero(size);
+  int offset = 0;
+  for (const FloatingCondensation& f : floating_) {
+    B_L_.middleCols(offset, f.size()) = Eigen::MatrixXd(block(B, all_indices(static_cast<int>(B.rows())), f.face_dofs())) * f.T();
+    S_.block(offset, offset, f.size(), f.size()) = f.S();
+    f_L_.segment(offset, f.size()) = f.f();
+    offset += f.size();
+  }
+}
+
+Eigen::MatrixXd CondensedInterface::floating_selection(LayerSelection face) const {
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(S_.rows(), S_.cols());
+  int offset = 0;
+  for (const FloatingCondensation& f : floating_) {
+    P.block(offset, offset, f.size(), f.size()) = f.selection(face);
+    offset += f.size();
+  }
+  return P;
+}
+
 double CondensedInterface::rcond() const {
   double r = 1;
   for (const SupportedBody& body : supported_) r = std::min(r, body.factor->rcond());
-  if (factor_interior_) r = std::min(r, factor_interior_->rcond());
+  for (const FloatingCondensation& f : floating_) r = std::min(r, f.rcond());
   return r;
 }
 
 Eigen::VectorXd CondensedInterface::displacement(const ContactProblem& problem, const Eigen::VectorXd& r,
-                                                 const Eigen::VectorXd& w) const {
+                                                 const Eigen::VectorXd& x) const {
   const LinearSystem& system = problem.system();
   Eigen::VectorXd u = Eigen::VectorXd::Zero(system.num_free());
   const Eigen::VectorXd force = system.F() + problem.B().transpose() * r;
@@ -177,12 +193,10 @@ Eigen::VectorXd CondensedInterface::displacement(const ContactProblem& problem, 
     const Eigen::VectorXd u_b = body.factor->solve(Eigen::VectorXd(take(force, body.dofs)));
     for (size_t i = 0; i < body.dofs.size(); ++i) u[body.dofs[i]] = u_b[i];
   }
-  for (size_t i = 0; i < floating_face_.size(); ++i) u[floating_face_[i]] = w[i];
-  if (factor_interior_) {
-    // Interior DOFs carry no interface force: K_ii u_i = F_i - K_if w.
-    const Eigen::VectorXd rhs = take(system.F(), floating_interior_) - K_if_ * w;
-    const Eigen::VectorXd u_i = factor_interior_->solve(rhs);
-    for (size_t i = 0; i < floating_interior_.size(); ++i) u[floating_interior_[i]] = u_i[i];
+  int offset = 0;
+  for (const FloatingCondensation& f : floating_) {
+    f.displacement(x.segment(offset, f.size()), u);
+    offset += f.size();
   }
   return u;
 }

@@ -12,9 +12,10 @@
 // factorisation of the same body (CAMD with Γ_b last: 1.6–1.9 × its fill, 3.6–5.7 × its
 // flops at h = 0.0125; METIS on the interior saves flops but costs more to order).
 // A floating body (the thin layer, Body::floating) is never factored whole — its stiffness is
-// singular when its contacts open. Its interior is condensed onto its interface DOFs w:
-//   S w = f_L + B_Lᵀ r,   S = K_ff - K_fi K_ii⁻¹ K_if,   f_L = F_f - K_fi K_ii⁻¹ F_i,
-// and the solver keeps w as unknowns. The jumps are then g = g₀ + W r + B_L w.
+// singular when its contacts open. Each is condensed onto the unknowns x through which its
+// interfaces touch it (core/solvers/floating_condensation.h: a layer band in its column basis):
+//   S x = f_L + B_Lᵀ r,
+// and the solver keeps x as unknowns. The jumps are then g = g₀ + W r + B_L x.
 // Nothing here depends on the interface law: every scene that shares the mesh, materials,
 // supports and loads (all Table 3 rows, all limit-mode law cases) shares one of these.
 #include <memory>
@@ -24,6 +25,7 @@
 
 #include "core/linalg/sparse_cholesky.h"
 #include "core/solvers/contact_problem.h"
+#include "core/solvers/floating_condensation.h"
 
 namespace thinlayer {
 
@@ -33,15 +35,17 @@ class CondensedInterface {
 
   const Eigen::MatrixXd& W() const { return W_; }
   const Eigen::VectorXd& g0() const { return g0_; }
-  // Floating bodies (empty when there are none).
+  // Floating bodies (empty when there are none): their unknowns x, one block per body.
   int num_floating_unknowns() const { return static_cast<int>(S_.rows()); }
-  const Eigen::MatrixXd& B_L() const { return B_L_; }  // 2m × |w|
-  const Eigen::MatrixXd& S() const { return S_; }      // |w| × |w|, daN/mm, singular if it floats
+  const Eigen::MatrixXd& B_L() const { return B_L_; }  // 2m × |x|
+  const Eigen::MatrixXd& S() const { return S_; }      // |x| × |x|, daN/mm, singular if it floats
   const Eigen::VectorXd& f_L() const { return f_L_; }
+  // The selection spring's pattern on x (FloatingCondensation::selection), block by block.
+  Eigen::MatrixXd floating_selection(LayerSelection face) const;
 
-  // Bulk displacement (free DOFs) for interface forces r and floating-body interface DOFs w.
+  // Bulk displacement (free DOFs) for interface forces r and floating-body unknowns x.
   Eigen::VectorXd displacement(const ContactProblem& problem, const Eigen::VectorXd& r,
-                               const Eigen::VectorXd& w) const;
+                               const Eigen::VectorXd& x) const;
   double setup_time_s() const { return setup_time_s_; }  // factorisations + condensation
   // The smallest of the factors' SparseCholesky::rcond() (1 if none): a crude, optimistic
   // estimate, for reporting a loss of accuracy.
@@ -56,10 +60,11 @@ class CondensedInterface {
   // Factors one body, adds its part to W_ and g0_, and keeps its factor.
   void condense_body(const ContactProblem& problem, std::vector<int> dofs, const std::vector<bool>& on_interface);
 
+  // Condenses the floating bodies and assembles B_L_, S_, f_L_ from their blocks.
+  void condense_floating(const ContactProblem& problem, const std::vector<bool>& on_interface);
+
   std::vector<SupportedBody> supported_;
-  std::vector<int> floating_face_, floating_interior_;  // free DOF indices
-  std::shared_ptr<SparseCholesky> factor_interior_;
-  Eigen::SparseMatrix<double> K_if_;
+  std::vector<FloatingCondensation> floating_;
   Eigen::MatrixXd W_, B_L_, S_;
   Eigen::VectorXd g0_, f_L_;
   double setup_time_s_ = 0;

@@ -5,149 +5,178 @@
 #include <cstdio>
 #include <limits>
 
-#include <Eigen/Dense>
-
-#include "core/solvers/stagnation.h"
+#include "core/linalg/anderson.h"
+#include "core/solvers/layer_dual.h"
+#include "core/solvers/tresca.h"
 
 namespace thinlayer {
 
 namespace {
 
-// Outer steps over which the best residual must halve (stagnation.h): the anchor updates that
-// converge do so by orders of magnitude in a few steps, those that crawl gain ~0.5 % a step.
-constexpr int stagnation_window = 30;
+// The spring stages, as exponents k of ρ = κ 10⁻ᵏ: eliminated (1) while W̃'s conditioning,
+// about κ/ρ, leaves its solves accurate, mixed (2) below. 10⁻¹² κ: the pull of a spring that
+// weak on a film moved as far as the adherents is 1e-12 of their forces.
+constexpr int dual_stages[] = {0, 2, 4, 6, 8};
+constexpr int mixed_stages[] = {10, 12};
+constexpr int active_set_cap = 60;   // active-set steps per stage before the Tresca fixed point
+constexpr int settle_cap = 30;       // mixed Newton steps per stage or proximal step
+constexpr int proximal_cap = 30;
+constexpr int anderson_memory = 5;
 
-// The layer's dual operator for one anchor (see the header).
-class LayerDual {
+// The adherents' nodal stiffness along the interfaces (median, daN/mm): the spring's scale.
+double adherent_stiffness(const ContactProblem& problem) {
+  const LinearSystem& system = problem.system();
+  std::vector<double> k;
+  for (int n = 0; n < problem.num_nodes(); ++n)
+    for (int dof : {problem.node(n).plus_dof_x, problem.node(n).minus_dof_x}) {
+      if (dof < 0) continue;
+      const int free = system.free_index(dof);
+      if (free >= 0 && !system.floating(free)) k.push_back(system.K().coeff(free, free));
+    }
+  if (k.empty()) {  // only floating bodies touch the interfaces: their own stiffness
+    for (int i = 0; i < system.num_free(); ++i) k.push_back(system.K().coeff(i, i));
+  }
+  std::nth_element(k.begin(), k.begin() + k.size() / 2, k.end());
+  return k[k.size() / 2];
+}
+
+// Keeps the best iterate met, judged on the true SPEC residual.
+class BestIterate {
  public:
-  explicit LayerDual(const Condensed& c) : c_(c) {
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(c.S);
-    V_ = eigen.eigenvectors();
-    lambda_ = eigen.eigenvalues();
-    M_ = c.B_L * V_;
-  }
-  void set_floor(double floor_relative) {
-    const double rho = floor_relative * std::max(lambda_.cwiseAbs().maxCoeff(), 1e-300);
-    lambda_rho_ = lambda_.cwiseMax(rho);
-    pull_ = lambda_rho_ - lambda_;  // the selection spring, on the soft modes only
-    W_tilde_ = c_.W + M_ * lambda_rho_.cwiseInverse().asDiagonal() * M_.transpose();
-    W_tilde_ = 0.5 * (W_tilde_ + W_tilde_.transpose()).eval();
-  }
-  const Eigen::MatrixXd& W_tilde() const { return W_tilde_; }
-
-  // Modal load of the layer for forces r: Vᵀ (f_L + B_Lᵀ r) + pull Vᵀ w_a.
-  Eigen::VectorXd modal_load(const Eigen::VectorXd& r, const Eigen::VectorXd& w_anchor) const {
-    return V_.transpose() * (c_.f_L + c_.B_L.transpose() * r) + pull_.cwiseProduct(V_.transpose() * w_anchor);
-  }
-  Eigen::VectorXd g_tilde(const Eigen::VectorXd& w_anchor) const {
-    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(c_.g0.size());
-    return c_.g0 + M_ * modal_load(zero, w_anchor).cwiseQuotient(lambda_rho_);
-  }
-  // The problem with the selection spring in place of the soft modes' own stiffness, anchored
-  // at w_anchor: S_ρ = V Λ_ρ Vᵀ, f_L + V (Λ_ρ - Λ) Vᵀ w_anchor.
-  Condensed anchored(const Eigen::VectorXd& w_anchor) const {
-    Condensed out = c_;
-    out.S = V_ * lambda_rho_.asDiagonal() * V_.transpose();
-    out.S = 0.5 * (out.S + out.S.transpose()).eval();
-    out.f_L = c_.f_L + V_ * pull_.cwiseProduct(V_.transpose() * w_anchor);
-    return out;
-  }
-  Eigen::VectorXd w(const Eigen::VectorXd& r, const Eigen::VectorXd& w_anchor) const {
-    return V_ * modal_load(r, w_anchor).cwiseQuotient(lambda_rho_);
+  BestIterate(const ContactProblem& problem, const CondensedInterface& condensed)
+      : problem_(problem), condensed_(condensed) {}
+  double consider(const Eigen::VectorXd& r, const Eigen::VectorXd& x, const std::vector<Active>& statuses,
+                  FloatingLayerRun& run) const {
+    const double residual = contact_residual(problem_, condensed_.displacement(problem_, r, x), r).value();
+    if (residual < run.residual) {
+      run.r = r;
+      run.x = x;
+      run.statuses = statuses;
+      run.residual = residual;
+    }
+    return residual;
   }
 
  private:
-  const Condensed& c_;
-  Eigen::MatrixXd V_, M_, W_tilde_;
-  Eigen::VectorXd lambda_, lambda_rho_, pull_;
+  const ContactProblem& problem_;
+  const CondensedInterface& condensed_;
 };
 
-// The reduced, limit-mode-like problem d = g̃ + W̃ r (no floating unknowns). The
-// complementarity parameter of each row is κ = scale / W̃_ii, the stiffness that row sees
-// through the layer: with the nodal stiffness of the bodies instead (as in limit mode), a film
-// row's κ d is dominated by the film's huge compliance and the statuses flip from step to step.
-Condensed reduced(const Condensed& c, const LayerDual& dual, const Eigen::VectorXd& w_anchor, double kappa_scale) {
-  Condensed out;
-  out.W = dual.W_tilde();
-  out.g0 = dual.g_tilde(w_anchor);
-  out.kappa = kappa_scale * out.W.diagonal().cwiseMax(1e-300).cwiseInverse();
-  out.normal = c.normal;
-  out.tangential = c.tangential;
-  out.friction = c.friction;
-  return out;
+// The linear solves left under SolverOptions::max_iterations (unlimited when it is 0).
+struct Budget {
+  int cap = 0;
+  int left(const FloatingLayerRun& run, int wanted) const {
+    return cap > 0 ? std::max(0, std::min(wanted, cap - run.newton_steps)) : wanted;
+  }
+  bool spent(const FloatingLayerRun& run) const { return cap > 0 && run.newton_steps >= cap; }
+};
+
+// Stage 1: the statuses on the eliminated problem, from the previous stage's forces r.
+void settle_eliminated(const Condensed& reduced, const ContactProblem& problem, const Budget& budget,
+                       std::vector<Active>& statuses, Eigen::VectorXd& r, FloatingLayerRun& run) {
+  Eigen::VectorXd none;
+  statuses = guess_statuses(reduced, r, jump_part(reduced, r, none));
+  const ActiveSetRun first = active_set(reduced, problem, statuses, r, none, budget.left(run, active_set_cap));
+  run.newton_steps += first.iterations;
+  if (first.settled || budget.spent(run)) return;
+  // The active set cycles (a non-associated law): the Tresca fixed point cannot; its statuses
+  // then start a last active-set run.
+  const TrescaRun tresca = solve_tresca_fixed_point(reduced, r);
+  run.newton_steps += tresca.qp_iterations;
+  statuses = guess_statuses(reduced, r, jump_part(reduced, r, none));
+  run.newton_steps += active_set(reduced, problem, statuses, r, none, std::max(1, budget.left(run, settle_cap))).iterations;
+}
+
+// Newton steps on the mixed (r, x) system until the statuses reproduce themselves.
+bool settle_mixed(const Condensed& c, const Budget& budget, std::vector<Active>& statuses, Eigen::VectorXd& r,
+                  Eigen::VectorXd& x, FloatingLayerRun& run) {
+  const int steps = std::max(1, budget.left(run, settle_cap));  // one solve at least: the answer's
+  for (int step = 0; step < steps; ++step) {
+    const Step exact = solve_statuses(c, statuses);
+    ++run.newton_steps;
+    r = exact.r;
+    x = exact.w;
+    run.singular = exact.singular;
+    run.rcond = exact.rcond;
+    std::vector<Active> next = guess_statuses(c, r, jump_part(c, r, x));
+    if (next == statuses) return true;
+    statuses = std::move(next);
+  }
+  return false;
+}
+
+// c with the spring K_s anchored at `anchor`, its statuses guessed on the eliminated problem's
+// scale κ_row = 1 / W̃_ii (which the anchor does not change).
+Condensed mixed_problem(const Condensed& c, const Eigen::MatrixXd& K_s, const Eigen::VectorXd& anchor,
+                        const Eigen::VectorXd& kappa) {
+  Condensed mixed = with_spring(c, K_s, anchor);
+  mixed.kappa = kappa;
+  return mixed;
 }
 
 }  // namespace
 
 FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& problem,
                                       const CondensedInterface& condensed, const SolverOptions& options,
-                                      Eigen::VectorXd r, Eigen::VectorXd w, int max_steps) {
+                                      Eigen::VectorXd r, Eigen::VectorXd x) {
   FloatingLayerRun run;
-  LayerDual dual(c);
-  dual.set_floor(options.layer_floor);
-  auto true_residual = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& ww) {
-    return contact_residual(problem, condensed.displacement(problem, rr, ww), rr).value();
+  run.residual = std::numeric_limits<double>::infinity();
+  const BestIterate best(problem, condensed);
+  const Eigen::MatrixXd P = condensed.floating_selection(options.layer_selection);
+  const double kappa = adherent_stiffness(problem);
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(x.size());
+  const Budget budget{options.max_iterations};
+  auto spring = [&](int k) { return Eigen::MatrixXd(kappa * std::pow(10.0, -k) * P); };
+  auto report = [&](const char* what, int k, double residual) {
+    if (!options.verbose) return;
+    std::fprintf(stderr, "  layer: %s spring kappa*1e-%d, %d linear solves so far", what, k, run.newton_steps);
+    if (std::isfinite(residual)) std::fprintf(stderr, ", residual %.3e", residual);
+    std::fprintf(stderr, "\n");
   };
-  Eigen::VectorXd w_anchor = w;
-  run.residual = std::numeric_limits<double>::infinity();  // of the best iterate, kept in run
-  Stagnation stagnation(stagnation_window);
-  while (run.newton_steps < max_steps) {
+
+  // 1. The statuses on the eliminated layer, as the spring weakens.
+  std::vector<Active> statuses;
+  int last = 0;
+  for (int k : dual_stages) {
+    if (budget.spent(run)) break;
     ++run.outer_steps;
-    // 1. The statuses, on the layer's dual operator (NSGS sweeps break an active-set cycle).
-    const Condensed reduced_problem = reduced(c, dual, w_anchor, options.layer_kappa_scale);
-    Eigen::VectorXd no_w;
-    std::vector<Active> statuses = guess_statuses(reduced_problem, r, jump_part(reduced_problem, r, no_w));
-    const ActiveSetRun newton = active_set(reduced_problem, problem, statuses, r, no_w,
-                                           std::min(options.layer_newton_cap, max_steps - run.newton_steps));
-    run.newton_steps += newton.iterations;
-    run.nsgs_sweeps += newton.nsgs_sweeps;
-    const Eigen::VectorXd w_regularised = dual.w(r, w_anchor);
-    // 2. The polish: the same statuses solved exactly, in the mixed (r, w) form, with the
-    //    selection spring anchored where the regularised solve put the layer. The pull it leaves
-    //    is ρ times the layer's last move on its soft modes, which the true residual measures.
-    //    (Solved on the true S instead, the soft modes are round-off: a free film end was thrown
-    //    111 mm off in the bar's row 5 at ε = 1e-4, with a residual of 1e-14 all the same.)
-    Step exact = solve_statuses(dual.anchored(w_regularised), statuses);
-    ++run.newton_steps;
-    double polished = true_residual(exact.r, exact.w);
-    // 2b. If that stops short, the same statuses on the true S, with no spring at all: where the
-    //     contacts hold every soft mode it is the exact answer, where the anchor updates would
-    //     crawl (the bar's row 1 at ε = 1e-5: 244 anchor updates, stuck at 3e-10; this way 42
-    //     steps). Where they do not, its film is placed by round-off, and the film check of
-    //     fast_solver.cpp sees that.
-    if (polished > options.tolerance) {
-      const Step unregularised = solve_statuses(c, statuses);
-      ++run.newton_steps;
-      const double residual = true_residual(unregularised.r, unregularised.w);
-      if (residual < polished) {
-        exact = unregularised;
-        polished = residual;
-      }
-    }
-    const double regularised = true_residual(r, w_regularised);
-    if (std::min(polished, regularised) < run.residual) {
-      const bool take_polished = polished <= regularised;
-      run.r = take_polished ? exact.r : r;
-      run.w = take_polished ? exact.w : w_regularised;
-      run.residual = std::min(polished, regularised);
-      run.statuses = statuses;
-    }
-    if (options.verbose)
-      std::fprintf(stderr, "  layer (dual) outer step %d: %d Newton steps so far, residual polished %.3e, "
-                           "regularised %.3e%s\n", run.outer_steps, run.newton_steps, polished, regularised,
-                   exact.singular ? " (singular)" : "");
-    if (run.residual <= options.tolerance) break;
-    if (stagnation.after_step(run.residual)) {
-      run.stagnated = true;
-      break;
-    }
-    // 3. Not yet: the anchor moves to where the layer is, and the next step starts there.
-    w_anchor = w_regularised;
+    last = k;
+    settle_eliminated(eliminate_layer(c, spring(k), rest), problem, budget, statuses, r, run);
+    report("eliminated,", k, std::numeric_limits<double>::quiet_NaN());
   }
-  // The conditioning of the final statuses on the true (unregularised) problem, for the report.
-  const Step last = solve_statuses(c, run.statuses);
-  run.singular = last.singular;
-  run.rcond = last.rcond;
+  // 2. Weaker springs, on the mixed system (the first of them also when the budget ran out, so
+  //    that the statuses found so far give an answer).
+  Eigen::VectorXd kappa_last;
+  for (int k : mixed_stages) {
+    if (budget.spent(run) && std::isfinite(run.residual)) break;
+    ++run.outer_steps;
+    last = k;
+    kappa_last = eliminate_layer(c, spring(k), rest).kappa;
+    settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, run);
+    report("mixed,", k, best.consider(r, x, statuses, run));
+  }
+  // 3. Proximal steps: the spring's anchor follows the layer until its pull is gone.
+  AndersonAcceleration anderson(anderson_memory);
+  Eigen::VectorXd anchor = x;
+  int settled_in_a_row = 0;
+  for (int step = 0; step < proximal_cap && !(run.residual <= options.tolerance) && !budget.spent(run); ++step) {
+    ++run.outer_steps;
+    const bool settled = settle_mixed(mixed_problem(c, spring(last), anchor, kappa_last), budget, statuses, r, x, run);
+    settled_in_a_row = settled ? settled_in_a_row + 1 : 0;
+    report("proximal,", last, best.consider(r, x, statuses, run));
+    // The map anchor → x is linear while the statuses hold: accelerate it then, restart if not.
+    if (settled) {
+      anchor = anderson.next(anchor, x);
+    } else {
+      anderson.reset();
+      anchor = x;
+    }
+  }
+  run.adrift = !(run.residual <= options.tolerance) && settled_in_a_row >= 5 && !budget.spent(run);
+  // The conditioning of the best iterate's statuses on the true (spring-free) problem.
+  const Step final_system = solve_statuses(c, run.statuses);
+  run.singular = final_system.singular;
+  run.rcond = final_system.rcond;
   return run;
 }
 

@@ -1,22 +1,27 @@
 #pragma once
-// The floating-layer solver (thin-layer mode, SPEC §1.5): the layer eliminated into its dual
-// operator, the statuses found on that limit-mode-like problem, the answer from an exact solve
-// of those statuses on the true problem.
+// The floating-layer solver (thin-layer mode, SPEC §1.5; issue 13).
 //
-// The layer's condensed face stiffness S (w its face DOFs) is singular: 3 rigid modes, and a
-// film of thickness ε has bending modes far below round-off (stiffness ~ μ_ε ε³). Those modes
-// are the layer's non-uniqueness (SPEC §1.5: where it is not pinched, its position is not
-// unique). With S = V Λ Vᵀ, floor the eigenvalues at ρ = ρ_rel λ_max, so that the soft modes
-// get a spring ρ towards an anchor w_a (a selection term, PPA-like), and eliminate w:
-//   w(r) = V Λ_ρ⁻¹ (Vᵀ (f_L + B_Lᵀ r) + (Λ_ρ - Λ) Vᵀ w_a),
-//   d   = g̃ + W̃ r,   W̃ = W + B_L V Λ_ρ⁻¹ Vᵀ B_Lᵀ  (SPD),   g̃ = g₀ + B_L V Λ_ρ⁻¹ (…).
-// Then, per outer step:
-//   1. statuses on (W̃, g̃): the limit mode's active-set Newton method, with κ = 1 / W̃_ii, and
-//      NSGS sweeps when the active set cycles;
-//   2. the polish: those statuses solved exactly on the true (r, w) system (one linear solve);
-//   3. the true SPEC residual (per body): done if it meets the tolerance, else the anchor moves
-//      to the current w and the next outer step starts from there.
-// The selection never enters the answer: convergence is judged on the unregularised residual.
+// The layer is held by nothing but its two contacts, and where it is not pinched its position
+// is not unique (a free film, a slip that may sit on either face). Its condensed stiffness S on
+// x (core/solvers/floating_condensation.h: per column the minus face's translation t and the
+// plus face's displacement relative to it) is accurate, but its translations are held only by
+// the film's in-plane stiffness, down to 1e-13 of its through-thickness stiffness. A selection
+// spring ρ P (P: core/solvers/floating_condensation.h) holds them towards the layer's rest
+// position, and the problem is solved as ρ decreases:
+//   1. ρ = κ·10⁰, 10⁻², …, 10⁻⁸ (κ the adherents' nodal stiffness): the layer is eliminated,
+//      d = g̃ + W̃ r with W̃ = W + B_L (S + ρP)⁻¹ B_Lᵀ (core/solvers/layer_dual.h), and the
+//      statuses are found there by the active-set method warm started from the previous ρ; where
+//      it cycles, by the Tresca fixed point (core/solvers/tresca.h), which cannot;
+//   2. ρ = κ·10⁻¹⁰, 10⁻¹²: W̃ is too ill-conditioned to solve in (its film compliance 1/ρ hides
+//      the adherents' by 12 orders), so the Newton steps solve the mixed (r, x) system instead,
+//      with the statuses still guessed on W̃'s scale (κ_row = 1/W̃_ii: decided by the forces on
+//      a film that the slightest force moves far, not by its jumps);
+//   3. the spring's pull ρ P (x − anchor) is part of the answer's error: the anchor moves to the
+//      layer (a proximal step), Anderson-accelerated, each step re-settling the statuses, until
+//      the true residual meets the tolerance (a film pushed along by a force nothing else resists
+//      goes where that force is balanced, however far).
+// The selection never enters the verdict: every candidate is judged on the true, per-body SPEC
+// residual, and the best one met is returned.
 #include <vector>
 
 #include <Eigen/Core>
@@ -27,20 +32,21 @@
 namespace thinlayer {
 
 struct FloatingLayerRun {
-  Eigen::VectorXd r, w;
+  Eigen::VectorXd r, x;
   std::vector<Active> statuses;
-  int newton_steps = 0;   // active-set steps and polishes: one linear solve each
-  int outer_steps = 0;    // anchor updates (dual) or proximal steps (proximal_layer.h)
-  int nsgs_sweeps = 0;
-  bool singular = false;  // the last polish's system was rank deficient (the film's position free)
+  int newton_steps = 0;   // linear solves: active-set steps, Tresca QP steps, mixed steps
+  int outer_steps = 0;    // spring stages and proximal steps
+  bool singular = false;  // the final statuses' system is rank deficient (a layer left free)
   double rcond = 1;
-  double residual = 0;    // the true SPEC residual of (r, w): the best iterate met is returned
-  bool stagnated = false; // stopped because the best residual no longer improved (stagnation.h)
+  double residual = 0;    // the true SPEC residual of (r, x), the best met
+  bool adrift = false;    // not converged, and the last proximal steps each re-settled the same
+                          // statuses: the layer is being followed along a push, not searched for
 };
 
-// options.tolerance decides convergence; at most max_steps Newton steps.
+// c: the scene's condensed problem with its floating unknowns x (S without spring); r, x: the
+// starting iterate (a warm start, or zero).
 FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& problem,
                                       const CondensedInterface& condensed, const SolverOptions& options,
-                                      Eigen::VectorXd r, Eigen::VectorXd w, int max_steps);
+                                      Eigen::VectorXd r, Eigen::VectorXd x);
 
 }  // namespace thinlayer

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "core/solvers/contact_problem.h"
+#include "core/solvers/floating_condensation.h"
 
 namespace thinlayer {
 
@@ -16,7 +17,8 @@ enum class StopCause {
   IterationCap,    // the iteration cap was reached first
   Singular,        // the answer is not unique: a floating body is held by none of its contacts
   LossOfAccuracy,  // the statuses settled but the linear solve could not reach the tolerance
-  Stagnated,       // the outer iteration stopped improving its best residual (core/solvers/stagnation.h)
+  LayerAdrift,     // a floating layer is pushed by a force only the selection spring resists
+                   // (core/solvers/floating_layer.h): its exact position is beyond the proximal steps
   NonFinite,       // NaN or Inf appeared in the iterate
 };
 const char* to_string(StopCause cause);
@@ -46,20 +48,10 @@ struct SolverOptions {
   double omega = 1.8;           // relaxation only: over-relaxation coefficient ω
   int sweeps_per_rho_update = 10;  // relaxation only: sweeps between friction-threshold updates
   bool verbose = false;         // progress lines on stderr
-  // Fast solver only. α of the proximal steps taken when a floating body is present, relative
-  // to the diagonal of its condensed stiffness (see fast_solver.cpp).
-  double proximal_weight = 1e-2;
-  // Fast solver, floating layer only. Which path: the layer's dual operator
-  // (floating_layer.h) and, if it stops short of the tolerance, the proximal path
-  // (proximal_layer.h); or one of them alone (to compare selections, or measure each).
-  enum class LayerPath { DualThenProximal, Dual, Proximal };
-  LayerPath layer_path = LayerPath::DualThenProximal;
-  // The dual path: the floor of the layer's condensed face-stiffness eigenvalues relative to the
-  // largest (the selection spring on its soft modes; 1e-12 is about where S's round-off lies),
-  // the active-set steps per anchor, and κ relative to 1 / W̃_ii.
-  double layer_floor = 1e-12;
-  int layer_newton_cap = 300;
-  double layer_kappa_scale = 1;
+  // Fast solver, floating layer only: which face of the layer the selection spring holds where
+  // the layer's position is not unique (core/solvers/floating_layer.h). Both selections are
+  // answers; they must agree on what the problem determines (SPEC §1.5).
+  LayerSelection layer_selection = LayerSelection::MinusFace;
   // Fast solver only: the complementarity parameter of the active-set guess, relative to the
   // nodal stiffness. It changes the path, never the answer (judged on the SPEC residual). On
   // the bar's layer mode (6 rows × ε = 1e-2, 1e-3, 1e-4) 1 converged in 14 of 18 scenes, 0.1 in

@@ -1,0 +1,96 @@
+#include "core/linalg/equilibrated_solve.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+namespace thinlayer {
+
+namespace {
+
+constexpr int ruiz_sweeps = 5;
+constexpr int refinements = 3;
+
+// Row and column scalings that bring every row's and column's largest entry near 1 (Ruiz).
+void ruiz(const Eigen::SparseMatrix<double>& A, Eigen::VectorXd& row, Eigen::VectorXd& col) {
+  const Eigen::Index n = A.rows();
+  row = Eigen::VectorXd::Ones(n);
+  col = Eigen::VectorXd::Ones(n);
+  for (int sweep = 0; sweep < ruiz_sweeps; ++sweep) {
+    Eigen::VectorXd row_max = Eigen::VectorXd::Zero(n), col_max = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index j = 0; j < A.outerSize(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+        const double v = std::abs(row[it.row()] * it.value() * col[j]);
+        row_max[it.row()] = std::max(row_max[it.row()], v);
+        col_max[j] = std::max(col_max[j], v);
+      }
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (row_max[i] > 0) row[i] /= std::sqrt(row_max[i]);
+      if (col_max[i] > 0) col[i] /= std::sqrt(col_max[i]);
+    }
+  }
+}
+
+// Hager's (Higham's) estimate of ‖M⁻¹‖₁ from solves with M and Mᵀ.
+template <typename Solve, typename SolveTransposed>
+double inverse_norm1_estimate(Eigen::Index n, Solve solve, SolveTransposed solve_transposed) {
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 1.0 / static_cast<double>(n));
+  double estimate = 0;
+  for (int iteration = 0; iteration < 5; ++iteration) {
+    const Eigen::VectorXd y = solve(x);
+    estimate = y.lpNorm<1>();
+    const Eigen::VectorXd xi = y.unaryExpr([](double v) { return v >= 0 ? 1.0 : -1.0; });
+    const Eigen::VectorXd z = solve_transposed(xi);
+    Eigen::Index j = 0;
+    if (z.cwiseAbs().maxCoeff(&j) <= z.dot(x)) break;
+    x.setZero();
+    x[j] = 1;
+  }
+  return estimate;
+}
+
+}  // namespace
+
+Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* rcond) {
+  const Eigen::SparseMatrix<double> As = A.sparseView();
+  Eigen::VectorXd row, col;
+  ruiz(As, row, col);
+  const Eigen::Index n = A.rows();
+  if (n >= 200 && As.nonZeros() < A.size() / 4) {
+    const Eigen::SparseMatrix<double> Ms = row.asDiagonal() * As * col.asDiagonal();
+    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+    lu.compute(Ms);
+    if (lu.info() == Eigen::Success) {
+      auto solve = [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(lu.solve(v)); };
+      Eigen::VectorXd x = col.asDiagonal() * solve(row.asDiagonal() * b);
+      for (int refinement = 0; refinement < refinements; ++refinement)
+        x += col.asDiagonal() * solve(row.asDiagonal() * (b - As * x));
+      if (rcond) {
+        double norm1 = 0;
+        for (Eigen::Index j = 0; j < Ms.outerSize(); ++j) {
+          double column = 0;
+          for (Eigen::SparseMatrix<double>::InnerIterator it(Ms, j); it; ++it) column += std::abs(it.value());
+          norm1 = std::max(norm1, column);
+        }
+        const double inverse = inverse_norm1_estimate(
+            n, solve, [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(lu.transpose().solve(v)); });
+        *rcond = norm1 > 0 && std::isfinite(inverse) && inverse > 0 ? 1.0 / (norm1 * inverse) : 0.0;
+      }
+      return x;
+    }
+    // A structurally singular pattern: the dense LU below says how singular.
+  }
+  const Eigen::MatrixXd M = row.asDiagonal() * A * col.asDiagonal();
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
+  if (rcond) *rcond = lu.rcond();
+  Eigen::VectorXd x = col.asDiagonal() * lu.solve(row.asDiagonal() * b);
+  for (int refinement = 0; refinement < refinements; ++refinement)
+    x += col.asDiagonal() * lu.solve(row.asDiagonal() * (b - A * x));
+  return x;
+}
+
+}  // namespace thinlayer

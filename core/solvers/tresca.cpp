@@ -1,0 +1,49 @@
+#include "core/solvers/tresca.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/linalg/anderson.h"
+#include "core/linalg/box_qp.h"
+
+namespace thinlayer {
+
+namespace {
+
+Eigen::VectorXd thresholds(const Condensed& c, const Eigen::VectorXd& r) {
+  const int m = static_cast<int>(c.normal.size());
+  Eigen::VectorXd s(m);
+  for (int k = 0; k < m; ++k) s[k] = c.tangential[k] ? c.friction[k] * std::max(0.0, -r[2 * k]) : 0.0;
+  return s;
+}
+
+}  // namespace
+
+TrescaRun solve_tresca_fixed_point(const Condensed& c, Eigen::VectorXd& r, int max_updates, double tolerance) {
+  const int m = static_cast<int>(c.normal.size());
+  const double infinity = std::numeric_limits<double>::infinity();
+  TrescaRun run;
+  AndersonAcceleration anderson(5);
+  Eigen::VectorXd s = thresholds(c, r), lo(2 * m), hi(2 * m);
+  for (run.threshold_updates = 1; run.threshold_updates <= max_updates; ++run.threshold_updates) {
+    for (int k = 0; k < m; ++k) {
+      lo[2 * k] = c.normal[k] ? -infinity : 0.0;  // r_N ≤ 0 (0 where the law has no normal force)
+      hi[2 * k] = 0.0;
+      lo[2 * k + 1] = -s[k];
+      hi[2 * k + 1] = s[k];
+    }
+    const BoxQPRun qp = solve_box_qp(c.W, c.g0, lo, hi, r);
+    run.qp_iterations += qp.iterations;
+    const Eigen::VectorXd image = thresholds(c, r);
+    const double change = (image - s).norm() / std::max(image.norm(), 1e-300);
+    if (qp.optimal && change <= tolerance) {
+      run.converged = true;
+      break;
+    }
+    s = anderson.next(s, image).cwiseMax(0.0);
+  }
+  run.threshold_updates = std::min(run.threshold_updates, max_updates);
+  return run;
+}
+
+}  // namespace thinlayer
