@@ -35,7 +35,7 @@ namespace {
 struct Row {
   std::string id, expected;
   int steps = 0;
-  double residual = 0, layer_residual = 0, solve_s = 0, setup_s = 0;
+  double residual = 0, layer_residual = 0, floor = 0, solve_s = 0, setup_s = 0;
   double bonded_s = 0;  // one linear solve of the same mesh with the layer bonded (dovetail layer scenes)
   std::string stop_cause, counts;
 };
@@ -49,6 +49,7 @@ Row row_of(const std::string& id, const SceneRecord& record, const SolveReport& 
   row.id = id;
   row.steps = report.iterations;
   row.residual = report.residual.value();
+  row.floor = report.residual.floor();
   for (size_t b = 0; b < record.body_names.size(); ++b)
     if (record.body_names[b] == "layer") row.layer_residual = record.residual_per_body[b];
   row.solve_s = report.wall_time_s;
@@ -149,10 +150,11 @@ int run(int argc, char** argv) {
   }
   std::ostringstream out;  // the CSV, written atomically at the end (core/io/output_target.h)
   if (!csv.empty()) {
-    out << "scene,steps,residual,layer_residual,solve_s,setup_s,stop_cause,combined_gap_slide_stick,expected,bonded_s\n";
+    out << "scene,steps,residual,layer_residual,roundoff_floor,solve_s,setup_s,stop_cause,combined_gap_slide_stick,expected,"
+           "bonded_s\n";
   }
-  std::printf("%-34s %6s %10s %10s %8s %8s  %-16s %s\n", "scene", "steps", "residual", "layer", "solve_s", "setup_s",
-              "stop", "gap/slide/stick");
+  std::printf("%-34s %6s %10s %10s %10s %8s %8s  %-16s %s\n", "scene", "steps", "residual", "layer", "floor", "solve_s",
+              "setup_s", "stop", "gap/slide/stick");
   int failures = 0, total = 0;
   for (const Scene& scene : scene_set()) {
     if (!only.empty() && scene.id.find(only) == std::string::npos) continue;
@@ -169,12 +171,12 @@ int run(int argc, char** argv) {
     const std::string flag = ok ? "" : "   <-- expected " + scene.expected;
     const std::string ratio =
         row.bonded_s > 0 ? "  x" + plain(std::round(10 * (row.solve_s + row.setup_s) / row.bonded_s) / 10) + " bonded" : "";
-    std::printf("%-34s %6d %10.2e %10.2e %8.3f %8.3f  %-16s %s%s%s\n", scene.id.c_str(), row.steps, row.residual,
-                row.layer_residual, row.solve_s, row.setup_s, row.stop_cause.c_str(), row.counts.c_str(), ratio.c_str(),
-                flag.c_str());
+    std::printf("%-34s %6d %10.2e %10.2e %10.2e %8.3f %8.3f  %-16s %s%s%s\n", scene.id.c_str(), row.steps, row.residual,
+                row.layer_residual, row.floor, row.solve_s, row.setup_s, row.stop_cause.c_str(), row.counts.c_str(),
+                ratio.c_str(), flag.c_str());
     std::fflush(stdout);
     if (!csv.empty()) out << scene.id << "," << row.steps << "," << row.residual << "," << row.layer_residual << ","
-                 << row.solve_s << "," << row.setup_s << "," << row.stop_cause << "," << row.counts << ","
+                 << row.floor << "," << row.solve_s << "," << row.setup_s << "," << row.stop_cause << "," << row.counts << ","
                  << scene.expected << "," << row.bonded_s << "\n";
   }
   std::printf("%d of %d scenes ended as expected\n", total - failures, total);

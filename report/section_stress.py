@@ -7,7 +7,7 @@ from html_parts import absent, esc, how_to_read, num, section, table
 from results_file import array, group, strings
 
 # The stop causes of core/solvers/solve_report.h, and how each row is coloured.
-NAMED = ("converged", "iteration cap", "singular system", "loss of accuracy", "layer adrift")
+NAMED = ("converged", "iteration cap", "singular system", "loss of accuracy", "round-off floor", "layer adrift")
 
 
 def render(ctx):
@@ -24,7 +24,7 @@ def render(ctx):
         "Each row is one scene pushed to an edge: a layer down to ε = 1e-8, a layer 1e-12 times softer than the "
         "adherents, friction from 0 to 10, distorted meshes, loads that open the whole interface, deliberately "
         "capped solves. A scene must converge to its residual or stop with a named cause (iteration cap, singular "
-        "system, loss of accuracy, layer adrift), with the condition estimate of its last linear system; none may write NaN or "
+        "system, loss of accuracy, round-off floor, layer adrift), with the condition estimate of its last linear system; none may write NaN or "
         "Inf. <b>expected</b> is the outcome the project claims for that scene (blank: any named cause). "
         "Counts are gap/slide/stick on S (layer mode: through both faces).")]
     rows, classes = [], []

@@ -128,7 +128,7 @@ TEST(StopCause, ASceneWithNaNIsNeverWritten) {
 
 TEST(StopCause, EveryCauseHasAName) {
   for (StopCause c : {StopCause::Converged, StopCause::IterationCap, StopCause::Singular, StopCause::LossOfAccuracy,
-                      StopCause::NonFinite, StopCause::LayerAdrift})
+                      StopCause::NonFinite, StopCause::RoundOffFloor, StopCause::LayerAdrift})
     EXPECT_STRNE(to_string(c), "unknown");
 }
 

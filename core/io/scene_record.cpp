@@ -100,6 +100,7 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   s.numbers["residual_bulk"] = report.residual.bulk;
   // SPEC §1.5: each body's and each interface's residual, with their names.
   s.residual_per_body = report.residual.per_body;
+  s.residual_floor_per_body = report.residual.per_body_floor;
   s.residual_per_interface = report.residual.per_interface;
   for (const Interface& i : problem.interfaces()) s.interface_names.push_back(i.name);
   s.numbers["tolerance"] = report.tolerance;
@@ -128,6 +129,7 @@ void require_finite_results(const SceneRecord& scene) {
   for (const char* name : {"residual", "residual_interface", "residual_bulk"})
     if (scene.numbers.count(name)) check(name, &scene.numbers.at(name), &scene.numbers.at(name) + 1);
   check("residual_per_body", scene.residual_per_body.begin(), scene.residual_per_body.end());
+  check("residual_floor_per_body", scene.residual_floor_per_body.begin(), scene.residual_floor_per_body.end());
   check("residual_per_interface", scene.residual_per_interface.begin(), scene.residual_per_interface.end());
 }
 
@@ -208,6 +210,12 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
   if (!scene.residual_per_body.empty()) {
     file.dataset(g + "/residual_per_body", scene.residual_per_body);
     file.attr(g + "/residual_per_body", "bodies", joined(scene.body_names));
+  }
+  if (!scene.residual_floor_per_body.empty()) {
+    // What double precision can resolve of each body's residual for this answer (the residual
+    // cannot be expected below it): Residual::per_body_floor.
+    file.dataset(g + "/residual_floor_per_body", scene.residual_floor_per_body);
+    file.attr(g + "/residual_floor_per_body", "bodies", joined(scene.body_names));
   }
   if (!scene.residual_per_interface.empty()) {
     file.dataset(g + "/residual_per_interface", scene.residual_per_interface);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace thinlayer {
@@ -75,6 +76,10 @@ Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, c
   return R;
 }
 
+double Residual::floor() const {
+  return per_body_floor.empty() ? 0.0 : *std::max_element(per_body_floor.begin(), per_body_floor.end());
+}
+
 Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& u_free,
                           const Eigen::VectorXd& r) {
   const LinearSystem& system = problem.system();
@@ -88,16 +93,21 @@ Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& 
   // Bulk, body by body: the imbalance and the forces on each body's own DOFs.
   const Eigen::VectorXd interface_force = problem.B().transpose() * r;
   const Eigen::VectorXd imbalance = system.K() * u_free - system.F() - interface_force;
+  const Eigen::VectorXd magnitude = system.K().cwiseAbs() * u_free.cwiseAbs() + system.F().cwiseAbs() +
+                                    problem.B().cwiseAbs().transpose() * r.cwiseAbs();
   const int bodies = system.num_bodies();
-  std::vector<double> imbalance2(bodies, 0.0), load2(bodies, 0.0), contact2(bodies, 0.0);
+  std::vector<double> imbalance2(bodies, 0.0), load2(bodies, 0.0), contact2(bodies, 0.0), magnitude2(bodies, 0.0);
   for (int i = 0; i < system.num_free(); ++i) {
     const int b = system.body_of(i);
     imbalance2[b] += imbalance[i] * imbalance[i];
     load2[b] += system.F()[i] * system.F()[i];
     contact2[b] += interface_force[i] * interface_force[i];
+    magnitude2[b] += magnitude[i] * magnitude[i];
   }
+  constexpr double unit_roundoff = 0.5 * std::numeric_limits<double>::epsilon();
   for (int b = 0; b < bodies; ++b) {
     res.per_body.push_back(relative(imbalance2[b], std::max(load2[b], contact2[b])));
+    res.per_body_floor.push_back(unit_roundoff * relative(magnitude2[b], std::max(load2[b], contact2[b])));
     res.bulk = std::max(res.bulk, res.per_body.back());
   }
 

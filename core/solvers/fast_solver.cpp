@@ -36,6 +36,7 @@ StopCause stop_cause(const Condensed& c, const std::vector<Active>& statuses, co
     return StopCause::NonFinite;
   if (floating_bodies_free(c, statuses)) return StopCause::Singular;
   if (report.converged) return StopCause::Converged;
+  if (report.residual.value() <= report.residual.floor()) return StopCause::RoundOffFloor;
   if (adrift) return StopCause::LayerAdrift;
   if (cap_reached) return StopCause::IterationCap;
   return run.singular ? StopCause::Singular : StopCause::LossOfAccuracy;
@@ -56,6 +57,11 @@ std::string explain(const SolveReport& report, int max_iterations) {
       break;
     case StopCause::NonFinite:
       why << "NaN or Inf in the iterate";
+      break;
+    case StopCause::RoundOffFloor:
+      why << "the residual is within the round-off floor of double precision for this answer ("
+          << report.residual.floor()
+          << "): a displacement stored in double cannot balance the layer closer; the best iterate is reported";
       break;
     case StopCause::LayerAdrift:
       why << "the floating layer is pushed by a force that only its selection spring resists; the proximal steps "

@@ -155,21 +155,35 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, run);
     report("mixed,", k, best.consider(r, x, statuses, run));
   }
-  // 3. Proximal steps: the spring's anchor follows the layer until its pull is gone.
+  // 3. Proximal steps: the spring's anchor follows the layer until its pull is gone. The map
+  //    anchor → settled x is linear while the statuses hold: Anderson-accelerated. A step whose
+  //    statuses do not settle is retried shorter, from the last settled point.
   AndersonAcceleration anderson(anderson_memory);
-  Eigen::VectorXd anchor = x;
+  Eigen::VectorXd anchor = rest, proposal = x, settled_r = r, settled_x = x;
+  std::vector<Active> settled_statuses = statuses;
+  double fraction = 1;
   int settled_in_a_row = 0;
   for (int step = 0; step < proximal_cap && !(run.residual <= options.tolerance) && !budget.spent(run); ++step) {
     ++run.outer_steps;
-    const bool settled = settle_mixed(mixed_problem(c, spring(last), anchor, kappa_last), budget, statuses, r, x, run);
-    settled_in_a_row = settled ? settled_in_a_row + 1 : 0;
+    const Eigen::VectorXd trial = anchor + fraction * (proposal - anchor);
+    r = settled_r;
+    x = settled_x;
+    statuses = settled_statuses;
+    const bool settled = settle_mixed(mixed_problem(c, spring(last), trial, kappa_last), budget, statuses, r, x, run);
     report("proximal,", last, best.consider(r, x, statuses, run));
-    // The map anchor → x is linear while the statuses hold: accelerate it then, restart if not.
     if (settled) {
-      anchor = anderson.next(anchor, x);
+      ++settled_in_a_row;
+      anchor = trial;
+      settled_r = r;
+      settled_x = x;
+      settled_statuses = statuses;
+      proposal = anderson.next(anchor, x);
+      fraction = std::min(1.0, 2 * fraction);
     } else {
+      settled_in_a_row = 0;
       anderson.reset();
-      anchor = x;
+      fraction *= 0.25;
+      if (fraction < 1e-3) break;
     }
   }
   run.adrift = !(run.residual <= options.tolerance) && settled_in_a_row >= 5 && !budget.spent(run);

@@ -9,6 +9,7 @@ const char* to_string(StopCause cause) {
     case StopCause::Singular: return "singular system";
     case StopCause::LossOfAccuracy: return "loss of accuracy";
     case StopCause::NonFinite: return "non-finite values";
+    case StopCause::RoundOffFloor: return "round-off floor";
     case StopCause::LayerAdrift: return "layer adrift";
   }
   return "unknown";

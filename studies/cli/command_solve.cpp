@@ -238,6 +238,11 @@ void print_report(const SolveReport& report, const SceneRecord& record) {
   for (size_t i = 0; i < record.residual_per_interface.size(); ++i)
     say(" %s %.3e", record.interface_names[i].c_str(), record.residual_per_interface[i]);
   say("\n");
+  // What double precision can resolve of each body's residual for this answer.
+  say("  round-off floor per body:");
+  for (size_t b = 0; b < record.residual_floor_per_body.size(); ++b)
+    say(" %s %.1e", record.body_names[b].c_str(), record.residual_floor_per_body[b]);
+  say("\n");
 }
 
 void print_layer(const MeshQuality& q, double eps, const LayerCounts& c) {
@@ -311,7 +316,8 @@ std::string summary_line(const SolveInput& in, const SceneRecord& record, const 
       {"stop_cause", to_string(report.stop_cause)},
       {"iterations", report.iterations},
       {"residual", {{"value", report.residual.value()}, {"interface", report.residual.interface},
-                    {"bulk", report.residual.bulk}, {"tolerance", report.tolerance}}},
+                    {"bulk", report.residual.bulk}, {"tolerance", report.tolerance},
+                    {"roundoff_floor", report.residual.floor()}}},
       {"counts", counts},
       {"times_s", {{"solve", report.wall_time_s}, {"setup", setup}}},
       {"out", in.out.empty() ? nullptr : nlohmann::json(in.out)},

@@ -232,7 +232,8 @@ std::vector<Check> run_stress_study(const StressStudyOptions& options, H5Writer*
     if (out && results[i].has_record) write_scene(*out, results[i].record);
     const bool named = o.outcome == to_string(StopCause::Converged) || o.outcome == to_string(StopCause::IterationCap) ||
                        o.outcome == to_string(StopCause::Singular) || o.outcome == to_string(StopCause::LossOfAccuracy) ||
-                       o.outcome == to_string(StopCause::LayerAdrift);
+                       o.outcome == to_string(StopCause::LayerAdrift) ||
+                       o.outcome == to_string(StopCause::RoundOffFloor);
     checks.push_back({"stress." + scene.id + ".named", named && o.finite,
                       "converged, or stopped with a named cause; no NaN/Inf", o.outcome + (o.finite ? "" : ", NaN/Inf"),
                       ""});
@@ -259,7 +260,7 @@ std::vector<Check> run_stress_study(const StressStudyOptions& options, H5Writer*
   if (out) {
     table.write(*out, "/studies/stress");
     out->attr("/studies/stress", "note",
-              std::string("outcome: converged | iteration cap | singular system | loss of accuracy | layer adrift | non-finite "
+              std::string("outcome: converged | iteration cap | singular system | loss of accuracy | round-off floor | layer adrift | non-finite "
                           "values | error; residual -1 where the result was not finite; counts gap/slide/stick on S"));
   }
   return checks;

@@ -4,7 +4,7 @@
 // f from 0 to 10, distorted meshes, a floating layer whose contacts all open, loads that open
 // the whole interface, and deliberately capped solves. Each scene must either converge to the
 // SPEC residual or stop with a named cause (core/solvers/solve_report.h: iteration cap,
-// singular system, loss of accuracy with a condition estimate, layer adrift); none may write NaN or Inf.
+// singular system, loss of accuracy with a condition estimate, round-off floor, layer adrift); none may write NaN or Inf.
 #include <string>
 #include <vector>
 
