@@ -81,28 +81,29 @@ TEST(StopCause, AFloatingLayerWithEveryContactOpenIsSingular) {
   EXPECT_EQ(h.stop_cause, StopCause::Converged);
 }
 
-// The layer's proximal path is not monotone: in the dovetail's case (e) at eps = 1e-4 a smaller
-// proximal weight can free the floating film and throw the iterate far off. A capped solve
-// reports the best iterate it has seen, so a larger cap never reports a worse residual.
-// (Reporting the last iterate instead gave 1.9e-7 at cap 100 and 3.8e-5 at cap 200 here.)
-TEST(StopCause, ACappedLayerSolveReportsItsBestIterate) {
+// A capped layer solve stops within its cap and says so (SolverOptions::max_iterations bounds the
+// floating-layer solver's linear solves across its stages), reporting a finite iterate; the same
+// scene uncapped converges. Case (e) at ε = 1e-4 on a coarse mesh: its active set cycles on the
+// eliminated layer, so the caps cut it inside different stages.
+TEST(StopCause, ACappedLayerSolveStopsWithinItsCapAndSaysSo) {
   dovetail::MeshOptions mesh;
-  mesh.h_interface = 0.05;  // a coarse mesh: 1 s per solve
+  mesh.h_interface = 0.05;  // a coarse mesh: a fraction of a second per solve
   mesh.h_far = 0.2;
   const DovetailLimitBulk bulk(mesh);
-  double previous = std::numeric_limits<double>::infinity();
   for (int cap : {50, 100, 200}) {
     SolverOptions options;
     options.max_iterations = cap;
     const DovetailScene s =
         solve_dovetail_layer(bulk, dovetail::exponents_of('e'), 1e-4, "e", SolverKind::Fast, options);
     SCOPED_TRACE("cap " + std::to_string(cap) + ": " + s.report.message);
+    EXPECT_LE(s.report.iterations, cap);
     if (!s.report.converged) {
       EXPECT_EQ(s.report.stop_cause, StopCause::IterationCap);
     }
-    EXPECT_LE(s.report.residual.value(), previous);
-    previous = s.report.residual.value();
+    EXPECT_TRUE(std::isfinite(s.report.residual.value()));
   }
+  const DovetailScene free = solve_dovetail_layer(bulk, dovetail::exponents_of('e'), 1e-4, "e", SolverKind::Fast, {});
+  EXPECT_TRUE(free.report.converged) << free.report.message;
 }
 
 TEST(StopCause, ASceneWithNaNIsNeverWritten) {

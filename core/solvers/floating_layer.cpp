@@ -151,8 +151,20 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     if (budget.spent(run) && std::isfinite(run.residual)) break;
     ++run.outer_steps;
     last = k;
-    kappa_last = eliminate_layer(c, spring(k), rest).kappa;
-    settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, run);
+    const Condensed reduced = eliminate_layer(c, spring(k), rest);
+    kappa_last = reduced.kappa;
+    const std::vector<Active> before = statuses;
+    const Eigen::VectorXd r_before = r;
+    if (!settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, run) &&
+        !budget.spent(run)) {
+      // The weaker spring frees the layer more than full Newton steps can follow: find the
+      // statuses on the eliminated layer once more (coarse but robust at this spring), then
+      // settle them on the mixed system.
+      statuses = before;
+      r = r_before;
+      settle_eliminated(reduced, problem, budget, statuses, r, run);
+      settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, run);
+    }
     report("mixed,", k, best.consider(r, x, statuses, run));
   }
   // 3. Proximal steps: the spring's anchor follows the layer until its pull is gone. The map
