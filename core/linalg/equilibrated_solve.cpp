@@ -55,35 +55,36 @@ double inverse_norm1_estimate(Eigen::Index n, Solve solve, SolveTransposed solve
 
 }  // namespace
 
-Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* rcond) {
-  const Eigen::SparseMatrix<double> As = A.sparseView();
-  Eigen::VectorXd row, col;
-  ruiz(As, row, col);
-  const Eigen::Index n = A.rows();
-  if (n >= 200 && As.nonZeros() < A.size() / 4) {
-    const Eigen::SparseMatrix<double> Ms = row.asDiagonal() * As * col.asDiagonal();
-    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-    lu.compute(Ms);
-    if (lu.info() == Eigen::Success) {
-      auto solve = [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(lu.solve(v)); };
-      Eigen::VectorXd x = col.asDiagonal() * solve(row.asDiagonal() * b);
-      for (int refinement = 0; refinement < refinements; ++refinement)
-        x += col.asDiagonal() * solve(row.asDiagonal() * (b - As * x));
-      if (rcond) {
-        double norm1 = 0;
-        for (Eigen::Index j = 0; j < Ms.outerSize(); ++j) {
-          double column = 0;
-          for (Eigen::SparseMatrix<double>::InnerIterator it(Ms, j); it; ++it) column += std::abs(it.value());
-          norm1 = std::max(norm1, column);
-        }
-        const double inverse = inverse_norm1_estimate(
-            n, solve, [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(lu.transpose().solve(v)); });
-        *rcond = norm1 > 0 && std::isfinite(inverse) && inverse > 0 ? 1.0 / (norm1 * inverse) : 0.0;
-      }
-      return x;
+namespace {
+
+// Sparse LU of the equilibrated matrix, refinement against A; false if the pattern is
+// structurally singular.
+bool sparse_solve(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& row, const Eigen::VectorXd& col,
+                  const Eigen::VectorXd& b, Eigen::VectorXd& x, double* rcond) {
+  const Eigen::SparseMatrix<double> M = row.asDiagonal() * A * col.asDiagonal();
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  lu.compute(M);
+  if (lu.info() != Eigen::Success) return false;
+  auto solve = [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(lu.solve(v)); };
+  x = col.asDiagonal() * solve(row.asDiagonal() * b);
+  for (int refinement = 0; refinement < refinements; ++refinement)
+    x += col.asDiagonal() * solve(row.asDiagonal() * (b - A * x));
+  if (rcond) {
+    double norm1 = 0;
+    for (Eigen::Index j = 0; j < M.outerSize(); ++j) {
+      double column = 0;
+      for (Eigen::SparseMatrix<double>::InnerIterator it(M, j); it; ++it) column += std::abs(it.value());
+      norm1 = std::max(norm1, column);
     }
-    // A structurally singular pattern: the dense LU below says how singular.
+    const double inverse = inverse_norm1_estimate(
+        M.rows(), solve, [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(lu.transpose().solve(v)); });
+    *rcond = norm1 > 0 && std::isfinite(inverse) && inverse > 0 ? 1.0 / (norm1 * inverse) : 0.0;
   }
+  return true;
+}
+
+Eigen::VectorXd dense_solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& row, const Eigen::VectorXd& col,
+                            const Eigen::VectorXd& b, double* rcond) {
   const Eigen::MatrixXd M = row.asDiagonal() * A * col.asDiagonal();
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
   if (rcond) *rcond = lu.rcond();
@@ -91,6 +92,23 @@ Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::Vector
   for (int refinement = 0; refinement < refinements; ++refinement)
     x += col.asDiagonal() * lu.solve(row.asDiagonal() * (b - A * x));
   return x;
+}
+
+}  // namespace
+
+Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* rcond) {
+  const Eigen::SparseMatrix<double> As = A.sparseView();
+  if (A.rows() >= 200 && As.nonZeros() < A.size() / 4) return solve_equilibrated(As, b, rcond);
+  Eigen::VectorXd row, col;
+  ruiz(As, row, col);
+  return dense_solve(A, row, col, b, rcond);
+}
+
+Eigen::VectorXd solve_equilibrated(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, double* rcond) {
+  Eigen::VectorXd row, col, x;
+  ruiz(A, row, col);
+  if (sparse_solve(A, row, col, b, x, rcond)) return x;
+  return dense_solve(Eigen::MatrixXd(A), row, col, b, rcond);  // says how singular
 }
 
 }  // namespace thinlayer

@@ -45,14 +45,17 @@ class BestIterate {
  public:
   BestIterate(const ContactProblem& problem, const CondensedInterface& condensed)
       : problem_(problem), condensed_(condensed) {}
+  // The candidate (r, x) of the last mixed solve, whose conditioning is in `last`.
   double consider(const Eigen::VectorXd& r, const Eigen::VectorXd& x, const std::vector<Active>& statuses,
-                  FloatingLayerRun& run) const {
+                  const Step& last, FloatingLayerRun& run) const {
     const double residual = contact_residual(problem_, condensed_.displacement(problem_, r, x), r).value();
     if (residual < run.residual) {
       run.r = r;
       run.x = x;
       run.statuses = statuses;
       run.residual = residual;
+      run.singular = last.singular;
+      run.rcond = last.rcond;
     }
     return residual;
   }
@@ -87,17 +90,16 @@ void settle_eliminated(const Condensed& reduced, const ContactProblem& problem, 
   run.newton_steps += active_set(reduced, problem, statuses, r, none, std::max(1, budget.left(run, settle_cap))).iterations;
 }
 
-// Newton steps on the mixed (r, x) system until the statuses reproduce themselves.
+// Newton steps on the mixed (r, x) system until the statuses reproduce themselves; `last` is the
+// last step's system (for its conditioning).
 bool settle_mixed(const Condensed& c, const Budget& budget, std::vector<Active>& statuses, Eigen::VectorXd& r,
-                  Eigen::VectorXd& x, FloatingLayerRun& run) {
+                  Eigen::VectorXd& x, Step& last, FloatingLayerRun& run) {
   const int steps = std::max(1, budget.left(run, settle_cap));  // one solve at least: the answer's
   for (int step = 0; step < steps; ++step) {
-    const Step exact = solve_statuses(c, statuses);
+    last = solve_statuses(c, statuses);
     ++run.newton_steps;
-    r = exact.r;
-    x = exact.w;
-    run.singular = exact.singular;
-    run.rcond = exact.rcond;
+    r = last.r;
+    x = last.w;
     std::vector<Active> next = guess_statuses(c, r, jump_part(c, r, x));
     if (next == statuses) return true;
     statuses = std::move(next);
@@ -147,6 +149,7 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
   // 2. Weaker springs, on the mixed system (the first of them also when the budget ran out, so
   //    that the statuses found so far give an answer).
   Eigen::VectorXd kappa_last;
+  Step last_step;
   for (int k : mixed_stages) {
     if (budget.spent(run) && std::isfinite(run.residual)) break;
     ++run.outer_steps;
@@ -155,7 +158,7 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     kappa_last = reduced.kappa;
     const std::vector<Active> before = statuses;
     const Eigen::VectorXd r_before = r;
-    if (!settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, run) &&
+    if (!settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, last_step, run) &&
         !budget.spent(run)) {
       // The weaker spring frees the layer more than full Newton steps can follow: find the
       // statuses on the eliminated layer once more (coarse but robust at this spring), then
@@ -163,9 +166,9 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
       statuses = before;
       r = r_before;
       settle_eliminated(reduced, problem, budget, statuses, r, run);
-      settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, run);
+      settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, last_step, run);
     }
-    report("mixed,", k, best.consider(r, x, statuses, run));
+    report("mixed,", k, best.consider(r, x, statuses, last_step, run));
   }
   // 3. Proximal steps: the spring's anchor follows the layer until its pull is gone. The map
   //    anchor → settled x is linear while the statuses hold: Anderson-accelerated. A step whose
@@ -181,8 +184,9 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     r = settled_r;
     x = settled_x;
     statuses = settled_statuses;
-    const bool settled = settle_mixed(mixed_problem(c, spring(last), trial, kappa_last), budget, statuses, r, x, run);
-    report("proximal,", last, best.consider(r, x, statuses, run));
+    const bool settled =
+        settle_mixed(mixed_problem(c, spring(last), trial, kappa_last), budget, statuses, r, x, last_step, run);
+    report("proximal,", last, best.consider(r, x, statuses, last_step, run));
     if (settled) {
       ++settled_in_a_row;
       anchor = trial;
@@ -199,10 +203,6 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     }
   }
   run.adrift = !(run.residual <= options.tolerance) && settled_in_a_row >= 5 && !budget.spent(run);
-  // The conditioning of the best iterate's statuses on the true (spring-free) problem.
-  const Step final_system = solve_statuses(c, run.statuses);
-  run.singular = final_system.singular;
-  run.rcond = final_system.rcond;
   return run;
 }
 

@@ -36,8 +36,8 @@ struct FloatingLayerRun {
   std::vector<Active> statuses;
   int newton_steps = 0;   // linear solves: active-set steps, Tresca QP steps, mixed steps
   int outer_steps = 0;    // spring stages and proximal steps
-  bool singular = false;  // the final statuses' system is rank deficient (a layer left free)
-  double rcond = 1;
+  bool singular = false;  // the best iterate's last system was rank deficient (a layer left free)
+  double rcond = 1;       // and its reciprocal condition estimate
   double residual = 0;    // the true SPEC residual of (r, x), the best met
   bool adrift = false;    // not converged, and the last proximal steps each re-settled the same
                           // statuses: the layer is being followed along a push, not searched for

@@ -3,8 +3,11 @@
 #include <stdexcept>
 
 #include <Eigen/Cholesky>
-#include <Eigen/SparseCholesky>
+#include <memory>
+
 #include <Eigen/SparseCore>
+
+#include "core/linalg/sparse_cholesky.h"
 
 namespace thinlayer {
 
@@ -31,9 +34,14 @@ std::pair<Eigen::MatrixXd, Eigen::VectorXd> layer_compliance(const Eigen::Matrix
   if (Ss.nonZeros() < S.size() / 4) {
     const Eigen::SparseMatrix<double> Ms = scale.asDiagonal() * Ss * scale.asDiagonal();
     const Eigen::SparseMatrix<double> G = Eigen::SparseMatrix<double>(B_L.sparseView()) * scale.asDiagonal();  // B_L D
-    const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(Ms);
-    if (llt.info() != Eigen::Success) not_definite();
-    const Eigen::MatrixXd Z = llt.solve(Eigen::MatrixXd(G.transpose()));  // (D S D)⁻¹ D B_Lᵀ
+    // CHOLMOD (supernodal: its solves with the 2m right-hand sides run on BLAS 3).
+    std::unique_ptr<SparseCholesky> factor;
+    try {
+      factor = std::make_unique<SparseCholesky>(Ms);
+    } catch (const std::runtime_error&) {
+      not_definite();
+    }
+    const Eigen::MatrixXd Z = factor->solve(Eigen::MatrixXd(G.transpose()));  // (D S D)⁻¹ D B_Lᵀ
     return {G * Z, Z.transpose() * g};
   }
   // With (D S D) = L Lᵀ: B_L S⁻¹ B_Lᵀ = Yᵀ Y for Y = L⁻¹ D B_Lᵀ.
