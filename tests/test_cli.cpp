@@ -279,6 +279,16 @@ TEST_F(Cli, SingularSceneNamesItsCauseAndExitsNonZero) {
   EXPECT_EQ(h5.attr_string(g, "stop_cause"), "singular system");
   EXPECT_GT(h5.attr_double(g, "condition_estimate"), 1e14);  // numerically singular, and said so
   EXPECT_DOUBLE_EQ(h5.attr_double(g, "load_scale"), -1.0);
+  // Each body's residual and its round-off floor, named (SPEC §1.5).
+  const auto residual = h5.read_doubles(g + "/residual_per_body");
+  const auto floor = h5.read_doubles(g + "/residual_floor_per_body");
+  EXPECT_EQ(h5.attr_string(g + "/residual_floor_per_body", "bodies"), "bar,layer");
+  ASSERT_EQ(floor.size(), residual.size());
+  EXPECT_GT(floor[0], 1e-19);  // the bar: u_eps times its forces' magnitudes
+  for (double f : floor) {
+    EXPECT_GE(f, 0.0);  // the free layer carries nothing and sits at rest: 0
+    EXPECT_LT(f, 1e-12);
+  }
 }
 
 TEST_F(Cli, NonConvergingSceneNamesItsCauseAndExitsNonZero) {

@@ -55,6 +55,15 @@ std::vector<Active> guess_statuses(const Condensed& c, const Eigen::VectorXd& r,
 
 int floating_unknowns(const Condensed& c) { return static_cast<int>(c.S.rows()); }
 
+bool floating_bodies_free(const Condensed& c, const std::vector<Active>& statuses) {
+  if (floating_unknowns(c) == 0) return false;
+  for (int k = 0; k < static_cast<int>(statuses.size()); ++k) {
+    const bool touches_floating = c.B_L.middleRows<2>(2 * k).cwiseAbs().maxCoeff() > 0;
+    if (touches_floating && statuses[k] != Active::Gap) return false;
+  }
+  return true;
+}
+
 // d = g₀ + (W + C) r + B_L w.
 Eigen::VectorXd jump_part(const Condensed& c, const Eigen::VectorXd& r, const Eigen::VectorXd& w) {
   Eigen::VectorXd d = c.g0 + c.W * r;

@@ -36,6 +36,10 @@ std::vector<Active> guess_statuses(const Condensed& c, const Eigen::VectorXd& r,
 
 int floating_unknowns(const Condensed& c);
 
+// Does every contact of the floating bodies stand open? Then nothing holds them and their
+// rigid position is undetermined: the system is singular, whatever the residual says.
+bool floating_bodies_free(const Condensed& c, const std::vector<Active>& statuses);
+
 // d = g₀ + (W + C) r + B_L w.
 Eigen::VectorXd jump_part(const Condensed& c, const Eigen::VectorXd& r, const Eigen::VectorXd& w);
 

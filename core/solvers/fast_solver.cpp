@@ -19,17 +19,6 @@ namespace thinlayer {
 
 namespace {
 
-// Does every contact of the floating bodies stand open? Then nothing holds them and their
-// rigid position is undetermined: the system is singular, whatever the residual says.
-bool floating_bodies_free(const Condensed& c, const std::vector<Active>& statuses) {
-  if (floating_unknowns(c) == 0) return false;
-  for (int k = 0; k < static_cast<int>(statuses.size()); ++k) {
-    const bool touches_floating = c.B_L.middleRows<2>(2 * k).cwiseAbs().maxCoeff() > 0;
-    if (touches_floating && statuses[k] != Active::Gap) return false;
-  }
-  return true;
-}
-
 StopCause stop_cause(const Condensed& c, const std::vector<Active>& statuses, const ActiveSetRun& run,
                      const SolveReport& report, bool cap_reached, bool adrift) {
   if (!report.u.allFinite() || !report.r.allFinite() || !std::isfinite(report.residual.value()))

@@ -203,6 +203,13 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     }
   }
   run.adrift = !(run.residual <= options.tolerance) && settled_in_a_row >= 5 && !budget.spent(run);
+  if (!(run.residual <= options.tolerance) || floating_bodies_free(c, run.statuses)) {
+    // Not converged, or the layer touches nothing: report the conditioning of the true
+    // (spring-free) problem with these statuses, which says whether the layer was left free.
+    const Step spring_free = solve_statuses(c, run.statuses);
+    run.singular = spring_free.singular;
+    run.rcond = spring_free.rcond;
+  }
   return run;
 }
 

@@ -36,8 +36,10 @@ struct FloatingLayerRun {
   std::vector<Active> statuses;
   int newton_steps = 0;   // linear solves: active-set steps, Tresca QP steps, mixed steps
   int outer_steps = 0;    // spring stages and proximal steps
-  bool singular = false;  // the best iterate's last system was rank deficient (a layer left free)
-  double rcond = 1;       // and its reciprocal condition estimate
+  // The best iterate's statuses: whether their system is rank deficient (a layer left free), and
+  // its reciprocal condition estimate; with the selection spring if converged, without if not.
+  bool singular = false;
+  double rcond = 1;
   double residual = 0;    // the true SPEC residual of (r, x), the best met
   bool adrift = false;    // not converged, and the last proximal steps each re-settled the same
                           // statuses: the layer is being followed along a push, not searched for
