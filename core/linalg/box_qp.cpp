@@ -28,12 +28,61 @@ Eigen::VectorXd free_step(const Eigen::MatrixXd& A, const Eigen::VectorXd& gradi
   return p;
 }
 
+// The primal–dual active-set guess at x with multipliers from the gradient (Hintermüller, Ito &
+// Kunisch): a variable is held at a bound where the bound is violated or its multiplier has
+// the right sign, with the complementarity weighted by c = 1 / A_ii.
+std::vector<Bound> pdas_guess(const Eigen::MatrixXd& A, const Eigen::VectorXd& gradient, const Eigen::VectorXd& lo,
+                              const Eigen::VectorXd& hi, const Eigen::VectorXd& x) {
+  std::vector<Bound> bound(x.size(), Bound::Free);
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    const double trial = x[i] - gradient[i] / A(i, i);  // one coordinate Newton step
+    if (trial <= lo[i]) bound[i] = Bound::Lower;
+    else if (trial >= hi[i]) bound[i] = Bound::Upper;
+  }
+  return bound;
+}
+
+// Up to `steps` primal–dual active-set steps from x: each solves the free variables' block with
+// the others at their bounds and re-guesses; true if the guess reproduced itself, x then being
+// optimal. Several bounds change per step, which makes it fast from a cold or shifted start; it
+// can also cycle, which the caller's primal active set cannot.
+bool pdas(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
+          Eigen::VectorXd& x, int steps, BoxQPRun& run) {
+  std::vector<Bound> bound = pdas_guess(A, A * x + b, lo, hi, x);
+  for (int step = 0; step < steps; ++step) {
+    Eigen::VectorXd trial = x;
+    std::vector<int> F;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      if (bound[i] == Bound::Free) F.push_back(static_cast<int>(i));
+      else trial[i] = bound[i] == Bound::Lower ? lo[i] : hi[i];
+      if (lo[i] == hi[i]) trial[i] = lo[i];
+    }
+    if (!F.empty()) {
+      const Eigen::VectorXd p = free_step(A, A * trial + b, F);
+      for (size_t k = 0; k < F.size(); ++k) trial[F[k]] += p[k];
+    }
+    ++run.iterations;
+    const std::vector<Bound> next = pdas_guess(A, A * trial + b, lo, hi, trial);
+    if (next == bound) {
+      // A fixed point of the guess: feasible and with the right multipliers up to round-off.
+      x = trial.cwiseMax(lo).cwiseMin(hi);
+      return true;
+    }
+    bound = next;
+  }
+  return false;
+}
+
 }  // namespace
 
 BoxQPRun solve_box_qp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const Eigen::VectorXd& lo,
                       const Eigen::VectorXd& hi, Eigen::VectorXd& x, int max_iterations) {
   const int n = static_cast<int>(A.rows());
   BoxQPRun run;
+  // The fast primal–dual steps first, from a copy: if they settle, the primal active set below
+  // only confirms the optimum (one step); if they cycle, it starts from the warm start.
+  Eigen::VectorXd trial = x;
+  if (pdas(A, b, lo, hi, trial, 20, run)) x = trial;
   x = x.cwiseMax(lo).cwiseMin(hi);
   std::vector<Bound> bound(n, Bound::Free);
   for (int i = 0; i < n; ++i) {
@@ -41,17 +90,24 @@ BoxQPRun solve_box_qp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const 
     else if (x[i] >= hi[i]) bound[i] = Bound::Upper;
   }
   bool at_face_minimizer = false;  // the last step was a full Newton step on the free variables
-  for (run.iterations = 1; run.iterations <= max_iterations; ++run.iterations) {
+  // At a face minimizer every bound whose multiplier has the wrong sign is released at once (a
+  // cold start on the layer's problems needs hundreds of releases); a step that then cannot move
+  // (α = 0, a degenerate corner) switches to the textbook one release at a time, which cannot
+  // cycle.
+  bool release_all = true;
+  for (int iteration = 0; iteration < max_iterations; ++iteration) {
+    ++run.iterations;
     const Eigen::VectorXd gradient = A * x + b;
     if (at_face_minimizer) {
-      // Release the bound whose multiplier has the wrong sign the most (at a lower bound the
-      // gradient must be ≥ 0, at an upper bound ≤ 0), or stop: x is optimal.
+      // The multipliers: at a lower bound the gradient must be ≥ 0, at an upper bound ≤ 0.
       const double noise = 1e-13 * std::max(gradient.cwiseAbs().maxCoeff(), 1e-300);
       int worst = -1;
       double violation = noise;
+      std::vector<int> violated;
       for (int i = 0; i < n; ++i) {
         if (lo[i] == hi[i]) continue;
         const double v = bound[i] == Bound::Lower ? -gradient[i] : bound[i] == Bound::Upper ? gradient[i] : 0.0;
+        if (v > noise) violated.push_back(i);
         if (v > violation) {
           violation = v;
           worst = i;
@@ -61,7 +117,11 @@ BoxQPRun solve_box_qp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const 
         run.optimal = true;
         return run;
       }
-      bound[worst] = Bound::Free;
+      if (release_all) {
+        for (int i : violated) bound[i] = Bound::Free;
+      } else {
+        bound[worst] = Bound::Free;
+      }
       at_face_minimizer = false;
       continue;
     }
@@ -90,13 +150,13 @@ BoxQPRun solve_box_qp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const 
       }
     }
     for (size_t k = 0; k < F.size(); ++k) x[F[k]] += alpha * p[k];
+    if (alpha == 0) release_all = false;
     if (blocking >= 0) {
       bound[blocking] = side;
       x[blocking] = side == Bound::Upper ? hi[blocking] : lo[blocking];
     }
     at_face_minimizer = blocking < 0;
   }
-  run.iterations = max_iterations;
   return run;
 }
 

@@ -21,6 +21,7 @@ constexpr int mixed_stages[] = {10, 12};
 constexpr int active_set_cap = 60;   // active-set steps per stage before the Tresca fixed point
 constexpr int settle_cap = 30;       // mixed Newton steps per stage or proximal step
 constexpr int proximal_cap = 30;
+constexpr int max_refinements = 6;  // intermediate springs inserted between the mixed stages
 constexpr int anderson_memory = 5;
 
 // The adherents' nodal stiffness along the interfaces (median, daN/mm): the spring's scale.
@@ -128,17 +129,17 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
   const double kappa = adherent_stiffness(problem);
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(x.size());
   const Budget budget{options.max_iterations};
-  auto spring = [&](int k) { return Eigen::MatrixXd(kappa * std::pow(10.0, -k) * P); };
-  auto report = [&](const char* what, int k, double residual) {
+  auto spring = [&](double k) { return Eigen::MatrixXd(kappa * std::pow(10.0, -k) * P); };
+  auto report = [&](const char* what, double k, double residual) {
     if (!options.verbose) return;
-    std::fprintf(stderr, "  layer: %s spring kappa*1e-%d, %d linear solves so far", what, k, run.newton_steps);
+    std::fprintf(stderr, "  layer: %s spring kappa*1e-%g, %d linear solves so far", what, k, run.newton_steps);
     if (std::isfinite(residual)) std::fprintf(stderr, ", residual %.3e", residual);
     std::fprintf(stderr, "\n");
   };
 
   // 1. The statuses on the eliminated layer, as the spring weakens.
   std::vector<Active> statuses;
-  int last = 0;
+  double last = 0;
   for (int k : dual_stages) {
     if (budget.spent(run)) break;
     ++run.outer_steps;
@@ -147,35 +148,47 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     report("eliminated,", k, std::numeric_limits<double>::quiet_NaN());
   }
   // 2. Weaker springs, on the mixed system (the first of them also when the budget ran out, so
-  //    that the statuses found so far give an answer).
+  //    that the statuses found so far give an answer). A spring whose statuses do not settle is
+  //    approached in smaller steps from the last one that did (at most `refinements` halvings).
   Eigen::VectorXd kappa_last;
   Step last_step;
-  for (int k : mixed_stages) {
+  std::vector<double> targets(std::begin(mixed_stages), std::end(mixed_stages));
+  std::vector<Active> settled_statuses = statuses;
+  Eigen::VectorXd settled_r = r, settled_x = x;
+  for (int refinements = 0; !targets.empty();) {
     if (budget.spent(run) && std::isfinite(run.residual)) break;
     ++run.outer_steps;
-    last = k;
+    const double k = targets.front();
     const Condensed reduced = eliminate_layer(c, spring(k), rest);
-    kappa_last = reduced.kappa;
-    const std::vector<Active> before = statuses;
-    const Eigen::VectorXd r_before = r;
-    if (!settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, last_step, run) &&
-        !budget.spent(run)) {
+    statuses = settled_statuses;
+    r = settled_r;
+    bool settled = settle_mixed(mixed_problem(c, spring(k), rest, reduced.kappa), budget, statuses, r, x, last_step, run);
+    if (!settled && !budget.spent(run)) {
       // The weaker spring frees the layer more than full Newton steps can follow: find the
-      // statuses on the eliminated layer once more (coarse but robust at this spring), then
-      // settle them on the mixed system.
-      statuses = before;
-      r = r_before;
+      // statuses on the eliminated layer (coarse but robust at this spring), then settle them.
+      statuses = settled_statuses;
+      r = settled_r;
       settle_eliminated(reduced, problem, budget, statuses, r, run);
-      settle_mixed(mixed_problem(c, spring(k), rest, kappa_last), budget, statuses, r, x, last_step, run);
+      settled = settle_mixed(mixed_problem(c, spring(k), rest, reduced.kappa), budget, statuses, r, x, last_step, run);
     }
-    report("mixed,", k, best.consider(r, x, statuses, last_step, run));
+    report(settled ? "mixed," : "mixed (not settled),", k, best.consider(r, x, statuses, last_step, run));
+    if (!settled && refinements < max_refinements && k - last > 0.25) {
+      ++refinements;
+      targets.insert(targets.begin(), 0.5 * (last + k));
+      continue;
+    }
+    last = k;
+    kappa_last = reduced.kappa;
+    settled_statuses = statuses;
+    settled_r = r;
+    settled_x = x;
+    targets.erase(targets.begin());
   }
   // 3. Proximal steps: the spring's anchor follows the layer until its pull is gone. The map
   //    anchor → settled x is linear while the statuses hold: Anderson-accelerated. A step whose
   //    statuses do not settle is retried shorter, from the last settled point.
   AndersonAcceleration anderson(anderson_memory);
-  Eigen::VectorXd anchor = rest, proposal = x, settled_r = r, settled_x = x;
-  std::vector<Active> settled_statuses = statuses;
+  Eigen::VectorXd anchor = rest, proposal = settled_x;
   double fraction = 1;
   int settled_in_a_row = 0;
   for (int step = 0; step < proximal_cap && !(run.residual <= options.tolerance) && !budget.spent(run); ++step) {

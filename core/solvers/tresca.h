@@ -16,7 +16,8 @@ namespace thinlayer {
 struct TrescaRun {
   int threshold_updates = 0;
   int qp_iterations = 0;   // one linear solve each
-  bool converged = false;  // the thresholds stopped moving (relative change below the tolerance)
+  bool converged = false;  // the thresholds stopped moving: relative change below the tolerance,
+                           // or below 1e-6 and no longer falling (the solves' noise)
 };
 
 // From r (warm start), on a problem with no floating unknowns.
