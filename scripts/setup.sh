@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(cmake g++ make libeigen3-dev libsuitesparse-dev liblapacke-dev libgmsh-dev libhdf5-dev
+packages=(cmake g++ make libeigen3-dev libsuitesparse-dev libblas-dev libgmsh-dev libhdf5-dev
           libsiconos-numerics-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-h5py
           libcli11-dev nlohmann-json3-dev libopenmpi-dev openmpi-bin)
 missing=()

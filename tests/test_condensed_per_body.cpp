@@ -1,7 +1,8 @@
-// The condensation body by body (issue 13): each connected supported body factored on its own,
-// W = Σ_b B_b S_b⁻¹ B_bᵀ with S_b⁻¹ from its trailing Cholesky factor (LAPACK dpotri), checked
-// against references that use neither: dense Eigen factorisations of the whole K, Eigen's own
-// sparse Cholesky, and a solve of the dovetail's settled statuses.
+// The condensation body by body (issue 13): the supported bodies factored as a linear solve
+// factors them, each a tree of the factor's elimination forest, W = Σ_b B_b (K_b⁻¹)_ΓΓ B_bᵀ
+// from the block of K⁻¹ on Γ (SparseCholesky::inverse_congruence), checked against references
+// that use neither: dense Eigen factorisations of the whole K, Eigen's own sparse Cholesky, and
+// a solve of the dovetail's settled statuses.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +15,6 @@
 #include <Eigen/SparseCholesky>
 
 #include "cases/dovetail/dovetail_scenes.h"
-#include "core/linalg/cholesky_inverse.h"
 #include "core/linalg/connected_components.h"
 #include "core/solvers/condensed_interface.h"
 #include "core/solvers/fast_solver.h"
@@ -25,30 +25,6 @@ namespace {
 template <class A, class B>
 double relative(const A& a, const B& reference) {
   return (a - reference).norm() / reference.norm();
-}
-
-Eigen::MatrixXd random_spd(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> uniform(-1, 1);
-  const Eigen::MatrixXd M = Eigen::MatrixXd::NullaryExpr(n, n, [&] { return uniform(rng); });
-  return M.transpose() * M + n * Eigen::MatrixXd::Identity(n, n);
-}
-
-TEST(CholeskyInverse, MatchesADenseInverseAndIsExactlySymmetric) {
-  const Eigen::MatrixXd S = random_spd(60, 1);
-  Eigen::MatrixXd L = S.llt().matrixL();
-  L.triangularView<Eigen::StrictlyUpper>().setConstant(7.0);  // not read
-  const Eigen::MatrixXd inverse = cholesky_inverse(L);
-  EXPECT_LT(relative(inverse, Eigen::MatrixXd(S.partialPivLu().inverse())), 1e-13);
-  EXPECT_EQ((inverse - inverse.transpose()).norm(), 0.0);
-  EXPECT_EQ(cholesky_inverse(Eigen::MatrixXd(0, 0)).size(), 0);
-}
-
-TEST(CholeskyInverse, AZeroPivotIsRefused) {
-  Eigen::MatrixXd L = Eigen::MatrixXd::Identity(3, 3);
-  L(1, 1) = 0;
-  EXPECT_THROW(cholesky_inverse(L), std::runtime_error);
-  EXPECT_THROW(cholesky_inverse(Eigen::MatrixXd(2, 3)), std::invalid_argument);
 }
 
 // A path graph i — i + stride on `count` unknowns starting at `first`, in an n × n matrix.

@@ -6,7 +6,7 @@
 
 #include <cholmod.h>
 
-#include "core/linalg/schur_factor.h"
+#include "core/linalg/inverse_block.h"
 
 namespace thinlayer {
 
@@ -61,16 +61,9 @@ struct SparseCholesky::Impl {
     cholmod_finish(&common);
   }
 
-  // Symbolic analysis with CHOLMOD's default orderings, or with the given permutation as is.
-  void analyze(cholmod_sparse* A, std::vector<int>* perm) {
-    if (perm) {
-      common.nmethods = 1;
-      common.method[0].ordering = CHOLMOD_GIVEN;
-      // No postordering: it would regroup the elimination tree by subtree, which moves
-      // interior columns between Γ's ones (checked after the analysis all the same).
-      common.postorder = 0;
-    }
-    L = perm ? cholmod_analyze_p(A, perm->data(), nullptr, 0, &common) : cholmod_analyze(A, &common);
+  // Symbolic analysis with CHOLMOD's default orderings (postordered, as inverse_block needs).
+  void analyze(cholmod_sparse* A) {
+    L = cholmod_analyze(A, &common);
     if (!L) throw std::runtime_error("SparseCholesky: CHOLMOD analysis failed (status " + std::to_string(common.status) + ")");
   }
 
@@ -116,36 +109,45 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A)
   check_square(A);
   Eigen::SparseMatrix<double> copy;
   cholmod_sparse a = view(compressed(A, copy));
-  impl_->analyze(&a, nullptr);
+  impl_->analyze(&a);
   impl_->factorize(&a);
   rcond_ = cholmod_rcond(impl_->L, &impl_->common);
-}
-
-SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A, const std::vector<int>& last)
-    : impl_(std::make_unique<Impl>()), size_(static_cast<int>(A.rows())) {
-  check_square(A);
-  std::vector<bool> seen(size_, false);
-  for (int i : last) {
-    if (i < 0 || i >= size_ || seen[i])
-      throw std::invalid_argument("SparseCholesky: the unknowns ordered last must be distinct indices of the matrix");
-    seen[i] = true;
-  }
-  Eigen::SparseMatrix<double> copy;
-  cholmod_sparse a = view(compressed(A, copy));
-  std::vector<int> perm = schur::order_last(&a, last, &impl_->common);
-  impl_->analyze(&a, &perm);
-  // The trailing block is only the Schur complement's factor if Γ really is last, in order.
-  const int* used = static_cast<const int*>(impl_->L->Perm);
-  const int first = size_ - static_cast<int>(last.size());
-  for (size_t k = 0; k < last.size(); ++k)
-    if (used[first + k] != last[k])
-      throw std::logic_error("SparseCholesky: CHOLMOD reordered the unknowns meant to be last");
-  impl_->factorize(&a);
-  rcond_ = cholmod_rcond(impl_->L, &impl_->common);
-  trailing_factor_ = schur::trailing_block(*impl_->L, static_cast<int>(last.size()));
 }
 
 SparseCholesky::~SparseCholesky() = default;
+
+namespace {
+
+// The columns `unknowns` of B, in that order.
+Eigen::SparseMatrix<double> columns(const Eigen::SparseMatrix<double>& B, const std::vector<int>& unknowns) {
+  Eigen::SparseMatrix<double> out(B.rows(), static_cast<Eigen::Index>(unknowns.size()));
+  out.reserve(B.nonZeros());
+  for (size_t j = 0; j < unknowns.size(); ++j) {
+    const auto col = static_cast<Eigen::Index>(j);
+    out.startVec(col);
+    for (Eigen::SparseMatrix<double>::InnerIterator it(B, unknowns[j]); it; ++it) out.insertBack(it.row(), col) = it.value();
+  }
+  out.finalize();
+  return out;
+}
+
+}  // namespace
+
+Eigen::MatrixXd SparseCholesky::inverse_congruence(const Eigen::SparseMatrix<double>& B) const {
+  if (B.cols() != size_) throw std::invalid_argument("SparseCholesky: B's columns are not the matrix's unknowns");
+  std::vector<int> touched;  // Γ: the unknowns B has an entry on
+  for (int c = 0; c < B.outerSize(); ++c)
+    if (Eigen::SparseMatrix<double>::InnerIterator(B, c)) touched.push_back(c);
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(B.rows(), B.rows());
+  // Σ over the trees (bodies) of B_t G_t B_tᵀ, G_t = (A⁻¹) on tree t's Γ.
+  for (const inverse_block::Block& t : inverse_block::per_tree(*impl_->L, touched)) {
+    const Eigen::SparseMatrix<double> B_t = columns(B, t.unknowns);
+    const Eigen::MatrixXd GBt = t.inverse * B_t.transpose();
+    W.noalias() += B_t * GBt;
+  }
+  W = 0.5 * (W + W.transpose()).eval();  // symmetric up to round-off; make it exact
+  return W;
+}
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
   if (b.size() != size_) throw std::invalid_argument("SparseCholesky: right-hand side of the wrong size");

@@ -1,15 +1,8 @@
 #pragma once
 // A CHOLMOD factorisation of a symmetric positive definite matrix, factored once and reused
-// for every right-hand side (all scenes that share a bulk matrix share one of these).
-//
-// Optionally some unknowns Γ are ordered last (the interface DOFs of a body): the trailing
-// block of the factor then is the Cholesky factor of the Schur complement of A onto Γ,
-//   L_ΓΓ L_ΓΓᵀ = S = A_ΓΓ − A_ΓI A_II⁻¹ A_IΓ   (I the other unknowns),
-// because with P A Pᵀ = L Lᵀ and Γ last the last block row of L Lᵀ reads
-// A_ΓΓ = L_ΓI L_ΓIᵀ + L_ΓΓ L_ΓΓᵀ with L_ΓI = A_ΓI L_II⁻ᵀ. It costs nothing beyond the
-// factorisation (core/linalg/schur_factor.h), where |Γ| dense solves would cost |Γ| solves.
+// for every right-hand side (all scenes that share a bulk matrix share one of these), and for
+// the block of the inverse that the condensation needs (inverse_congruence).
 #include <memory>
-#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -22,9 +15,6 @@ class SparseCholesky {
   // (a body free to move rigidly: missing supports, or a floating part of the model).
   // Only the lower triangle of A is read (A is symmetric).
   explicit SparseCholesky(const Eigen::SparseMatrix<double>& A);
-  // The same, with the unknowns `last` (distinct indices of A) ordered last, in that order,
-  // so that trailing_factor() is available. The rest keeps a fill-reducing order (CAMD).
-  SparseCholesky(const Eigen::SparseMatrix<double>& A, const std::vector<int>& last);
   ~SparseCholesky();
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
@@ -34,10 +24,12 @@ class SparseCholesky {
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
   int size() const { return size_; }
 
-  // The lower triangular L_ΓΓ (|last| × |last|, rows and columns in the order of `last`) with
-  // L_ΓΓ L_ΓΓᵀ = A_ΓΓ − A_ΓI A_II⁻¹ A_IΓ. Empty (0 × 0) when no `last` was given.
-  // Then x_Γᵀ S⁻¹ x_Γ = |L_ΓΓ⁻¹ x_Γ|²: one small dense triangular solve per use.
-  const Eigen::MatrixXd& trailing_factor() const { return trailing_factor_; }
+  // B A⁻¹ Bᵀ (B.rows() × B.rows(), exactly symmetric) for a sparse B whose columns are A's
+  // unknowns, as the Delassus operator W = B K⁻¹ Bᵀ. Only the block of A⁻¹ on the unknowns Γ
+  // that B touches is formed, from this factor as it is (core/linalg/inverse_block.h): a forward
+  // solve restricted to the paths from Γ to the roots, where B.rows() full solves would each
+  // cost a solve. Not thread-safe, as solve().
+  Eigen::MatrixXd inverse_congruence(const Eigen::SparseMatrix<double>& B) const;
 
   // CHOLMOD's cheap reciprocal condition estimate from the factor's diagonal,
   // (min diag L / max diag L)² = smallest / largest pivot. Crude and optimistic: the pivots lie
@@ -49,7 +41,6 @@ class SparseCholesky {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int size_ = 0;
-  Eigen::MatrixXd trailing_factor_;
   double rcond_ = 1;
 };
 

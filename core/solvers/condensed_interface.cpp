@@ -7,7 +7,6 @@
 
 #include <Eigen/Dense>
 
-#include "core/linalg/cholesky_inverse.h"
 #include "core/linalg/connected_components.h"
 
 namespace thinlayer {
@@ -60,27 +59,20 @@ Eigen::VectorXd take(const Eigen::VectorXd& v, const std::vector<int>& idx) {
   return out;
 }
 
-// The supported free DOFs, one list (ascending) per connected body of K's graph. A body must
-// be wholly supported or wholly floating: the two are condensed differently.
-std::vector<std::vector<int>> supported_bodies(const LinearSystem& system) {
+// The supported free DOFs (ascending). A body must be wholly supported or wholly floating: the
+// two are condensed differently, so a connected part of K holding both is refused.
+std::vector<int> supported_dofs(const LinearSystem& system) {
+  std::vector<int> dofs;
+  for (int i = 0; i < system.num_free(); ++i)
+    if (!system.floating(i)) dofs.push_back(i);
+  if (static_cast<int>(dofs.size()) == system.num_free()) return dofs;  // nothing floats
   const std::vector<int> part = connected_components(system.K());
-  std::vector<int> body_of_part(part.empty() ? 0 : *std::max_element(part.begin(), part.end()) + 1, -1);
-  std::vector<bool> part_floats(body_of_part.size(), false);
+  std::vector<bool> part_floats(system.num_free(), false);
   for (int i = 0; i < system.num_free(); ++i)
     if (system.floating(i)) part_floats[part[i]] = true;
-  std::vector<std::vector<int>> bodies;
-  for (int i = 0; i < system.num_free(); ++i) {
-    if (system.floating(i)) continue;
-    if (part_floats[part[i]])
-      throw std::logic_error("condensation: a floating body shares stiffness with a supported one");
-    int& body = body_of_part[part[i]];
-    if (body < 0) {
-      body = static_cast<int>(bodies.size());
-      bodies.emplace_back();
-    }
-    bodies[body].push_back(i);
-  }
-  return bodies;
+  for (int i : dofs)
+    if (part_floats[part[i]]) throw std::logic_error("condensation: a floating body shares stiffness with a supported one");
+  return dofs;
 }
 
 }  // namespace
@@ -95,44 +87,29 @@ CondensedInterface::CondensedInterface(const ContactProblem& problem) {
   for (int c = 0; c < B.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(B, c); it; ++it) on_interface[it.col()] = true;
 
-  const int rows = static_cast<int>(B.rows());
-  W_ = Eigen::MatrixXd::Zero(rows, rows);
-  g0_ = problem.jump_offset();
-  for (std::vector<int>& dofs : supported_bodies(system)) condense_body(problem, std::move(dofs), on_interface);
-  W_ = 0.5 * (W_ + W_.transpose()).eval();  // symmetric up to round-off; make it exact
+  condense_supported(problem, supported_dofs(system));
   condense_floating(problem, on_interface);
   setup_time_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void CondensedInterface::condense_body(const ContactProblem& problem, std::vector<int> dofs,
-                                       const std::vector<bool>& on_interface) {
+void CondensedInterface::condense_supported(const ContactProblem& problem, std::vector<int> dofs) {
   const LinearSystem& system = problem.system();
   const Eigen::SparseMatrix<double>& B = problem.B();
   const int rows = static_cast<int>(B.rows());
-  std::vector<int> gamma, gamma_dofs;  // Γ_b as positions in dofs, and as free DOFs
-  for (size_t a = 0; a < dofs.size(); ++a)
-    if (on_interface[dofs[a]]) {
-      gamma.push_back(static_cast<int>(a));
-      gamma_dofs.push_back(dofs[a]);
-    }
-  Eigen::SparseMatrix<double> K_b;
-  const bool whole = static_cast<int>(dofs.size()) == system.num_free();  // K_b = K: no copy
-  if (!whole) K_b = principal_block(system.K(), dofs);
-  const Eigen::SparseMatrix<double>& K_body = whole ? system.K() : K_b;
-  SupportedBody body{std::move(dofs), nullptr};
-  body.factor = gamma.empty() ? std::make_shared<SparseCholesky>(K_body)
-                              : std::make_shared<SparseCholesky>(K_body, gamma);
-  if (!gamma.empty()) {
-    // B touches only Γ_b of this body: W_b = B_Γ S_b⁻¹ B_Γᵀ, S_b⁻¹ from the trailing factor
-    // L_ΓΓ (L_ΓΓ L_ΓΓᵀ = S_b). B_Γ is sparse (a few entries per jump row), so both products
-    // cost |Γ_b| per entry of B_Γ, against (2/3)|Γ_b|³ for the inverse.
-    const Eigen::SparseMatrix<double> B_G = block(B, all_indices(rows), gamma_dofs);
-    const Eigen::MatrixXd B_S = B_G * cholesky_inverse(body.factor->trailing_factor());  // B_Γ S_b⁻¹
-    W_ += B_G * B_S.transpose();  // S_b⁻¹ is symmetric: (B_Γ S_b⁻¹)ᵀ = S_b⁻¹ B_Γᵀ
+  g0_ = problem.jump_offset();
+  supported_ = std::move(dofs);
+  if (supported_.empty()) {
+    W_ = Eigen::MatrixXd::Zero(rows, rows);
+    return;
   }
-  const Eigen::SparseMatrix<double> B_b = block(B, all_indices(rows), body.dofs);
-  g0_ += B_b * body.factor->solve(Eigen::VectorXd(take(system.F(), body.dofs)));
-  supported_.push_back(std::move(body));
+  // All supported (limit mode): K and B as they are, no copies.
+  const bool whole = static_cast<int>(supported_.size()) == system.num_free();
+  Eigen::SparseMatrix<double> K_s, B_s;
+  if (!whole) K_s = principal_block(system.K(), supported_), B_s = block(B, all_indices(rows), supported_);
+  factor_ = std::make_shared<SparseCholesky>(whole ? system.K() : K_s);
+  const Eigen::SparseMatrix<double>& B_supported = whole ? B : B_s;
+  W_ = factor_->inverse_congruence(B_supported);
+  g0_ += B_supported * factor_->solve(Eigen::VectorXd(take(system.F(), supported_)));
 }
 
 void CondensedInterface::condense_floating(const ContactProblem& problem, const std::vector<bool>& on_interface) {
@@ -178,8 +155,7 @@ Eigen::MatrixXd CondensedInterface::floating_selection(LayerSelection face) cons
 }
 
 double CondensedInterface::rcond() const {
-  double r = 1;
-  for (const SupportedBody& body : supported_) r = std::min(r, body.factor->rcond());
+  double r = factor_ ? factor_->rcond() : 1.0;
   for (const FloatingCondensation& f : floating_) r = std::min(r, f.rcond());
   return r;
 }
@@ -189,9 +165,9 @@ Eigen::VectorXd CondensedInterface::displacement(const ContactProblem& problem, 
   const LinearSystem& system = problem.system();
   Eigen::VectorXd u = Eigen::VectorXd::Zero(system.num_free());
   const Eigen::VectorXd force = system.F() + problem.B().transpose() * r;
-  for (const SupportedBody& body : supported_) {
-    const Eigen::VectorXd u_b = body.factor->solve(Eigen::VectorXd(take(force, body.dofs)));
-    for (size_t i = 0; i < body.dofs.size(); ++i) u[body.dofs[i]] = u_b[i];
+  if (factor_) {
+    const Eigen::VectorXd u_s = factor_->solve(Eigen::VectorXd(take(force, supported_)));
+    for (size_t i = 0; i < supported_.size(); ++i) u[supported_[i]] = u_s[i];
   }
   int offset = 0;
   for (const FloatingCondensation& f : floating_) {

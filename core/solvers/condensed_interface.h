@@ -1,16 +1,14 @@
 #pragma once
 // The bulk condensed onto the interface. The supported bodies are factored once (CHOLMOD):
 //   W = B_A K_AA⁻¹ B_Aᵀ   (the Delassus operator, mm/daN),   g₀ = B_A K_AA⁻¹ F_A + g_D  (mm).
-// The supported bodies share no stiffness, so K_AA is block-diagonal and each connected
-// body b is factored on its own, its interface DOFs Γ_b ordered last:
-//   W = Σ_b B_b S_b⁻¹ B_bᵀ,   S_b = K_b's Schur complement onto Γ_b,
-// with S_b⁻¹ from the trailing block of body b's factor (SparseCholesky::trailing_factor).
-// Each S_b⁻¹ costs (2/3)|Γ_b|³ (LAPACK dpotri), where one factor of all the bodies left one
-// |Γ| × |Γ| trailing block to solve against all 2m columns of B_Γᵀ and a product Zᵀ Z: for the
-// dovetail's two bodies at h = 0.0125 (|Γ_b| = 370, 2m = 370) 2·3.4e7 flops against 3e8.
-// The factorisations with Γ_b last remain the bulk of the cost: 1.3–1.45 × a plain
-// factorisation of the same body (CAMD with Γ_b last: 1.6–1.9 × its fill, 3.6–5.7 × its
-// flops at h = 0.0125; METIS on the interior saves flops but costs more to order).
+// K_AA is factored exactly as a linear solve factors it (CHOLMOD's own fill-reducing order),
+// and W comes from the block of K_AA⁻¹ on the interface DOFs Γ (SparseCholesky::
+// inverse_congruence): Z = L⁻¹ P E_Γ by a forward solve restricted to the paths from Γ to the
+// roots of the elimination tree, then K_ΓΓ⁻¹ = Zᵀ Z. The supported bodies share no stiffness,
+// so each is a tree of its own and is condensed on its own: W = Σ_b B_b (K_b⁻¹)_ΓΓ B_bᵀ.
+// For the dovetail at h = 0.0125 (two bodies, |Γ_b| = 370) that costs 1.7e8 flops, where
+// ordering Γ_b last to read S_b from the factor's trailing block (the previous design) made the
+// factorisation itself 1.5 times a plain one and its S_b⁻¹ another 6.8e7 flops.
 // A floating body (the thin layer, Body::floating) is never factored whole — its stiffness is
 // singular when its contacts open. Each is condensed onto the unknowns x through which its
 // interfaces touch it (core/solvers/floating_condensation.h: a layer band in its column basis):
@@ -52,18 +50,14 @@ class CondensedInterface {
   double rcond() const;
 
  private:
-  // A connected supported body: its free DOFs (ascending) and its factor, Γ_b last.
-  struct SupportedBody {
-    std::vector<int> dofs;
-    std::shared_ptr<SparseCholesky> factor;
-  };
-  // Factors one body, adds its part to W_ and g0_, and keeps its factor.
-  void condense_body(const ContactProblem& problem, std::vector<int> dofs, const std::vector<bool>& on_interface);
+  // Factors the supported bodies' stiffness (their free DOFs `dofs`, ascending) and forms W_, g0_.
+  void condense_supported(const ContactProblem& problem, std::vector<int> dofs);
 
   // Condenses the floating bodies and assembles B_L_, S_, f_L_ from their blocks.
   void condense_floating(const ContactProblem& problem, const std::vector<bool>& on_interface);
 
-  std::vector<SupportedBody> supported_;
+  std::vector<int> supported_;               // the supported free DOFs, ascending
+  std::shared_ptr<SparseCholesky> factor_;   // of their stiffness (null if none)
   std::vector<FloatingCondensation> floating_;
   Eigen::MatrixXd W_, B_L_, S_;
   Eigen::VectorXd g0_, f_L_;
