@@ -131,6 +131,29 @@ Eigen::SparseMatrix<double> columns(const Eigen::SparseMatrix<double>& B, const 
   return out;
 }
 
+// The lower triangle of W += B G Bᵀ, for a sparse m × k B with a few entries per row and
+// column and a dense symmetric G: H = G Bᵀ (a column of G per entry of B), then
+// W(r, c) += B(r, :) H(:, c) for r ≥ c. About 0.4 ms for the dovetail's two 370 × 370 blocks at
+// h = 0.0125, where Eigen's dense × sparseᵀ and sparse × dense products took 1.9 ms.
+void add_congruence_lower(const Eigen::SparseMatrix<double>& B, const Eigen::MatrixXd& G, Eigen::MatrixXd& W) {
+  const Eigen::Index m = B.rows(), k = B.cols();
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(k, m);
+  for (Eigen::Index j = 0; j < k; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator e(B, j); e; ++e) H.col(e.row()) += e.value() * G.col(j);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> by_row = B;
+  const int* start = by_row.outerIndexPtr();
+  const int* column = by_row.innerIndexPtr();
+  const double* value = by_row.valuePtr();
+  for (Eigen::Index c = 0; c < m; ++c) {
+    const double* h = H.col(c).data();
+    for (Eigen::Index r = c; r < m; ++r) {
+      double sum = 0;
+      for (int p = start[r]; p < start[r + 1]; ++p) sum += value[p] * h[column[p]];
+      W(r, c) += sum;
+    }
+  }
+}
+
 }  // namespace
 
 Eigen::MatrixXd SparseCholesky::inverse_congruence(const Eigen::SparseMatrix<double>& B) const {
@@ -140,12 +163,9 @@ Eigen::MatrixXd SparseCholesky::inverse_congruence(const Eigen::SparseMatrix<dou
     if (Eigen::SparseMatrix<double>::InnerIterator(B, c)) touched.push_back(c);
   Eigen::MatrixXd W = Eigen::MatrixXd::Zero(B.rows(), B.rows());
   // Σ over the trees (bodies) of B_t G_t B_tᵀ, G_t = (A⁻¹) on tree t's Γ.
-  for (const inverse_block::Block& t : inverse_block::per_tree(*impl_->L, touched)) {
-    const Eigen::SparseMatrix<double> B_t = columns(B, t.unknowns);
-    const Eigen::MatrixXd GBt = t.inverse * B_t.transpose();
-    W.noalias() += B_t * GBt;
-  }
-  W = 0.5 * (W + W.transpose()).eval();  // symmetric up to round-off; make it exact
+  for (const inverse_block::Block& t : inverse_block::per_tree(*impl_->L, touched))
+    add_congruence_lower(columns(B, t.unknowns), t.inverse, W);
+  W.triangularView<Eigen::StrictlyUpper>() = W.transpose();  // exactly symmetric
   return W;
 }
 
