@@ -28,7 +28,7 @@ class SparseCholesky {
   // unknowns, as the Delassus operator W = B K⁻¹ Bᵀ. Only the block of A⁻¹ on the unknowns Γ
   // that B touches is formed, from this factor as it is (core/linalg/inverse_block.h): a forward
   // solve restricted to the paths from Γ to the roots, where B.rows() full solves would each
-  // cost a solve. Not thread-safe, as solve().
+  // cost a solve. It reads the factor only.
   Eigen::MatrixXd inverse_congruence(const Eigen::SparseMatrix<double>& B) const;
 
   // CHOLMOD's cheap reciprocal condition estimate from the factor's diagonal,

@@ -6,9 +6,13 @@
 // inverse_congruence): Z = L⁻¹ P E_Γ by a forward solve restricted to the paths from Γ to the
 // roots of the elimination tree, then K_ΓΓ⁻¹ = Zᵀ Z. The supported bodies share no stiffness,
 // so each is a tree of its own and is condensed on its own: W = Σ_b B_b (K_b⁻¹)_ΓΓ B_bᵀ.
-// For the dovetail at h = 0.0125 (two bodies, |Γ_b| = 370) that costs 1.7e8 flops, where
-// ordering Γ_b last to read S_b from the factor's trailing block (the previous design) made the
-// factorisation itself 1.5 times a plain one and its S_b⁻¹ another 6.8e7 flops.
+// For the dovetail at h = 0.0125 (two bodies, |Γ_b| = 370) that is 1.7e8 flops in 4.4 ms, a
+// fifth of one linear solve (22.6 ms), where ordering each Γ_b last to read S_b from its
+// factor's trailing block (the previous design) made the numeric factorisation itself 1.5
+// times a plain one (22 ms against 14.5) before S_b⁻¹ (dpotri, 6.8e7 flops, 2 ms).
+// The bar is the other way round: its Γ is one straight edge, which costs nothing to order
+// last, while the paths from Γ cross its largest separators (at 256 contact nodes the blocks
+// cost a tenth of the factorisation, 2.8e9 flops).
 // A floating body (the thin layer, Body::floating) is never factored whole — its stiffness is
 // singular when its contacts open. Each is condensed onto the unknowns x through which its
 // interfaces touch it (core/solvers/floating_condensation.h: a layer band in its column basis):
