@@ -222,7 +222,6 @@ void run_s2_controls(const StudyInput& in, DovetailSceneCache& cache, H5Writer* 
     quadrature.eps.clear();  // the rate grid's thicknesses one decade apart (its own scenes)
     for (size_t k = 0; k < in.rates.eps.size(); k += 2) quadrature.eps.push_back(in.rates.eps[k]);
     quadrature.tolerance = in.rates.tolerance;
-    quadrature.tail = in.rates.tail;
     if (quadrature.eps.size() >= 2) run_quadrature_control(quadrature, cache, out);
   }
   SelectionControlOptions selection;

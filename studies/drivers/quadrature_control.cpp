@@ -22,9 +22,8 @@ std::vector<double> flank_sigma_N(const SceneRecord& r, const std::vector<int>& 
 
 // `flank_away`: the right flank's nodes away from its corners (there σ_N's own curvature is large).
 QuadratureSide measure_side(const std::vector<const DovetailScene*>& scenes, const DovetailNodes& nodes,
-                            const std::vector<int>& flank_away, const std::vector<double>& eps, const TailRule& tail) {
+                            const std::vector<int>& flank_away, const std::vector<double>& eps) {
   QuadratureSide side;
-  std::vector<int> changes;
   for (size_t k = 0; k < scenes.size(); ++k) {
     side.converged.push_back(scenes[k]->report.converged);
     side.ids.push_back(scenes[k]->record.id);
@@ -32,10 +31,9 @@ QuadratureSide measure_side(const std::vector<const DovetailScene*>& scenes, con
     if (k + 1 < scenes.size()) {
       const ModeDistance d = mode_distance(scenes[k]->record, scenes[k + 1]->record, nodes);
       side.d_sigma_N_away.push_back(d.e.at("sigma_N_away"));
-      changes.push_back(d.status_diff);
     }
   }
-  side.rate = cauchy_rate(eps, side.d_sigma_N_away, side.converged, tail, changes).fit;
+  side.slope = fit_power_law(std::vector<double>(eps.begin(), eps.end() - 1), side.d_sigma_N_away);
   return side;
 }
 
@@ -56,8 +54,9 @@ void print(const QuadratureControlOptions& options, const QuadratureControl& c) 
                 last ? "" : sci(c.rule.d_sigma_N_away[k], 2).c_str(), c.selective.converged[k] ? "" : "  selective NOT converged",
                 c.rule.converged[k] ? "" : "  rule NOT converged");
   }
-  std::printf("  rate of sigma_N_away (tail rule): selective %s, rule %s; reach ~ eps^q: q = %s (derived %g)\n",
-              rate_text(c.selective.rate).c_str(), rate_text(c.rule.rate).c_str(), rate_text(c.reach_fit).c_str(),
+  std::printf("  slope of sigma_N_away's differences (every pair, shown only): selective %s, rule %s;\n"
+              "  reach ~ eps^q: q = %s (derived %g)\n",
+              rate_text(c.selective.slope).c_str(), rate_text(c.rule.slope).c_str(), rate_text(c.reach_fit).c_str(),
               options.predicted_reach_exponent);
 }
 
@@ -71,9 +70,9 @@ void write(H5Writer& out, const QuadratureControlOptions& options, const Quadrat
     out.dataset(s + "/layer_scene", side->ids);
     out.dataset(s + "/zigzag_rms", side->zigzag_rms);
     out.dataset(s + "/d_sigma_N_away", side->d_sigma_N_away);
-    out.attr(s, "p_sigma_N_away", side->rate ? side->rate->p : 0.0);
-    out.attr(s, "p_sigma_N_away_stderr", side->rate ? side->rate->p_stderr : 0.0);
-    out.attr(s, "fitted", side->rate ? 1 : 0);
+    out.attr(s, "slope_sigma_N_away", side->slope ? side->slope->p : 0.0);
+    out.attr(s, "slope_sigma_N_away_stderr", side->slope ? side->slope->p_stderr : 0.0);
+    out.attr(s, "fitted", side->slope ? 1 : 0);
   }
   out.attr(g, "law_case", std::string(1, options.law_case));
   out.attr(g, "reach_exponent", c.reach_fit ? c.reach_fit->p : 0.0);
@@ -106,8 +105,8 @@ QuadratureControl run_quadrature_control(const QuadratureControlOptions& options
   }
   QuadratureControl c;
   c.eps = options.eps;
-  c.selective = measure_side(selective, nodes, flank_away, options.eps, options.tail);
-  c.rule = measure_side(rule, nodes, flank_away, options.eps, options.tail);
+  c.selective = measure_side(selective, nodes, flank_away, options.eps);
+  c.rule = measure_side(rule, nodes, flank_away, options.eps);
   // The zigzag selective integration adds: the alternating part of the difference of the two.
   std::vector<double> reach_eps, reach;
   for (size_t k = 0; k < options.eps.size(); ++k) {
