@@ -102,9 +102,8 @@ def cauchy_figure(ctx, g, cases, checked):
     fig.tight_layout()
     caption = ("Cauchy differences against ε_k (the thicker scene of each pair): filled markers are the fitted "
                "tail, hollow ones outside it (thicker than the tail, or at or above a status change); a cross marks "
-               "a difference with an unconverged scene. Solid line: "
-               "the fit over the tail (first checked quantity); dashed: the predicted slope through the tail's "
-               "centre.")
+               "a difference with an unconverged scene. For each quantity, in its colour: solid line, the fit over "
+               "its tail; dashed, the predicted slope through the tail's centre.")
     return ctx.figures.save(fig, "convergence_cauchy", "Cauchy differences per case", caption)
 
 
@@ -112,25 +111,25 @@ def cauchy_panel(ax, c, case, checked):
     eps, converged = array(c, "eps"), array(c, "converged").astype(bool)
     eps_k = eps[:-1]
     both = converged[:-1] & converged[1:]
+    p_pred = attr(c, "p_predicted")
     for q, color in zip(checked, COLORS):
         if "d_" + q not in c:
             continue
         d, tail = array(c, "d_" + q), array(c, "in_tail_" + q).astype(bool)
         ok = (d > 0) & np.isfinite(d)
-        ax.loglog(eps_k[ok], d[ok], "-", color=color, lw=0.8, alpha=0.6)
-        ax.loglog(eps_k[ok & tail], d[ok & tail], "o", color=color, ms=5, label=LABELS.get(q, q))
+        fitted = attr(c, "fitted_" + q, 0)
+        label = LABELS.get(q, q) + (f": p = {attr(c, 'p_' + q):.2f}" if fitted else ": not measurable")
+        ax.loglog(eps_k[ok], d[ok], "-", color=color, lw=0.6, alpha=0.4)
+        ax.loglog(eps_k[ok & tail], d[ok & tail], "o", color=color, ms=5, label=label)
         ax.loglog(eps_k[ok & ~tail & both], d[ok & ~tail & both], "o", mfc="none", color=color, ms=5)
         ax.loglog(eps_k[ok & ~both], d[ok & ~both], "x", color=color, ms=6)
-    if checked and attr(c, "fitted_" + checked[0], 0):
-        q = checked[0]
-        d, tail = array(c, "d_" + q), array(c, "in_tail_" + q).astype(bool)
-        x = eps_k[tail]
-        grid = np.geomspace(x.min(), x.max(), 10)
-        ax.loglog(grid, attr(c, "C_" + q) * grid ** attr(c, "p_" + q), "k-", lw=2, alpha=0.5,
-                  label=f"fit p = {attr(c, 'p_' + q):.2f}")
-        p_pred = attr(c, "p_predicted")
-        centre_x, centre_y = np.exp(np.mean(np.log(x))), np.exp(np.mean(np.log(d[tail])))
-        ax.loglog(grid, centre_y * (grid / centre_x) ** p_pred, "k--", lw=1.5, label=f"predicted {p_pred:g}")
+        if fitted and (ok & tail).any():
+            # The fit (solid) and the predicted slope through the tail's centre (dashed), per quantity.
+            x = eps_k[ok & tail]
+            grid = np.geomspace(x.min(), x.max(), 10)
+            ax.loglog(grid, attr(c, "C_" + q) * grid ** attr(c, "p_" + q), "-", color=color, lw=1.6, alpha=0.8)
+            centre_x, centre_y = np.exp(np.mean(np.log(x))), np.exp(np.mean(np.log(d[ok & tail])))
+            ax.loglog(grid, centre_y * (grid / centre_x) ** p_pred, "--", color=color, lw=1.0)
     ax.set_title(f"case ({case}), predicted p = {num(attr(c, 'p_predicted'))}")
     ax.set_xlabel("ε_k (mm)")
     ax.set_ylabel("‖q(ε_k) − q(ε_k+1)‖ (relative)")
