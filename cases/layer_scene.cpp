@@ -1,5 +1,7 @@
 #include "cases/layer_scene.h"
 
+#include "cases/layer_quadrature.h"
+
 namespace thinlayer {
 
 std::vector<int> combined_statuses(const InterfaceFields& plus_face, const InterfaceFields& minus_face) {
@@ -11,11 +13,12 @@ std::vector<int> combined_statuses(const InterfaceFields& plus_face, const Inter
   return combined;
 }
 
-LayerCounts finish_layer_record(SceneRecord& r, const Material& layer, int layer_elements,
+LayerCounts finish_layer_record(SceneRecord& r, const Material& layer, int layer_elements, bool selective,
                                 const MeshQuality& quality) {
   r.numbers["lambda_eps"] = layer.lambda;
   r.numbers["mu_eps"] = layer.mu;
   r.integers["layer_elements"] = layer_elements;
+  r.text["layer_quadrature"] = quadrature_name(selective);
   r.numbers["layer_min_angle_deg"] = quality.min_angle_deg;
   r.numbers["layer_max_aspect_ratio"] = quality.max_aspect_ratio;
   const InterfaceFields& plus = r.interfaces.at(0);

@@ -18,9 +18,10 @@ struct LayerCounts {
   StatusCount plus_face, minus_face, combined;
 };
 
-// Adds the layer's attributes (lambda_eps, mu_eps, layer_elements, layer mesh quality) and the
-// combined statuses to a record whose interfaces are S+ then S-, and returns the counts.
-LayerCounts finish_layer_record(SceneRecord& record, const Material& layer, int layer_elements,
+// Adds the layer's attributes (lambda_eps, mu_eps, layer_elements, layer_quadrature, layer mesh
+// quality) and the combined statuses to a record whose interfaces are S+ then S-, and returns
+// the counts. `selective`: the layer's λ part integrated at the cell centre (cases/layer_quadrature.h).
+LayerCounts finish_layer_record(SceneRecord& record, const Material& layer, int layer_elements, bool selective,
                                 const MeshQuality& quality);
 
 }  // namespace thinlayer

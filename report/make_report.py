@@ -30,7 +30,9 @@ import traceback
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
+import parallel_sections  # noqa: E402
 import section_bar_profiles  # noqa: E402
+import section_controls  # noqa: E402
 import section_convergence  # noqa: E402
 import section_convergence_rates  # noqa: E402
 import section_header  # noqa: E402
@@ -65,11 +67,16 @@ SECTIONS = (
     ("stiffness", "Figs. 6–7", section_layer_stiffness.render),
     ("convergence", "Convergence", section_convergence.render),
     ("rates", "Rates", section_convergence_rates.render),
+    ("controls", "Controls", section_controls.render),
     ("validity", "Validity", section_validity.render),
     ("timing", "Run time", section_timing.render),
     ("stress", "Stress tests", section_stress.render),
     ("scenes", "Your own joint", section_scene_files.render),
 )
+
+
+# Rendered by a second process, beside the others (parallel_sections.py): the slowest section.
+IN_HELPER = {"convergence"}
 
 
 class SectionError(Exception):
@@ -89,7 +96,18 @@ def write_report(f, results_path, out_dir):
     ctx = build("reading /scenes and /checks",
                 lambda: Context(path=results_path, f=f, scenes=index_scenes(f), checks=load_checks(f),
                                 figures=FigureWriter(out_dir)))
-    parts = [build(f"section '{label}'", lambda: render(ctx)) for _, label, render in SECTIONS]
+    helper, answer = parallel_sections.start(
+        results_path, out_dir, [(label, render) for anchor, label, render in SECTIONS if anchor in IN_HELPER])
+    try:
+        mine = {anchor: build(f"section '{label}'", lambda: render(ctx))
+                for anchor, label, render in SECTIONS if anchor not in IN_HELPER}
+        helper_parts, error = parallel_sections.finish(helper, answer)
+    finally:
+        parallel_sections.stop(helper)
+    if error:
+        raise SectionError(f"section '{error[0]}': {error[1]}")
+    from_helper = dict(zip([anchor for anchor, _, _ in SECTIONS if anchor in IN_HELPER], helper_parts))
+    parts = [mine[anchor] if anchor in mine else from_helper[anchor] for anchor, _, _ in SECTIONS]
     html = page("thinlayer verification report", [(a, label) for a, label, _ in SECTIONS], "\n".join(parts))
     with open(os.path.join(out_dir, "index.html"), "w", encoding="utf-8") as out:
         out.write(html)

@@ -54,6 +54,37 @@ TEST(CauchyRate, FewerThanThreeTailDifferencesIsNotMeasurable) {
   EXPECT_TRUE(cauchy_rate(eps, differences_of(eps, 0.5, 0.0), std::vector<bool>(eps.size(), true), wider).fit);
 }
 
+// A node that changes status between two thicknesses changes the expansion's coefficient there:
+// the differences at and above that pair are not the asymptotic tail. Synthetic: a jump added to
+// the difference across the change spoils the slope of the whole grid, not of the tail below it.
+TEST(CauchyRate, TheTailStartsBelowTheLastStatusChange) {
+  const std::vector<double> eps = geometric_eps_grid(8, 16, 2);  // 1e-4 … 1e-8: 8 differences
+  std::vector<double> d = differences_of(eps, 0.5, 0.0);
+  d[2] *= 8;                                        // the pair (1e-5, 10^-5.5): a node changes status
+  std::vector<int> changes(d.size(), 0);
+  changes[2] = 1;
+  const std::vector<bool> converged(eps.size(), true);
+  const CauchyRate r = cauchy_rate(eps, d, converged, TailRule{}, changes);
+  ASSERT_TRUE(r.fit);
+  EXPECT_EQ(r.fit->points, 5);  // the differences from 10^-5.5 down
+  for (size_t k = 0; k < d.size(); ++k) EXPECT_EQ(r.in_tail[k], k > 2) << k;
+  EXPECT_NEAR(r.fit->p, 0.5, 2e-3);
+  ASSERT_TRUE(r.fit_any_status);  // the old rule, kept beside: all 8, slope spoilt by the jump
+  EXPECT_EQ(r.fit_any_status->points, 8);
+  EXPECT_GT(std::abs(r.fit_any_status->p - 0.5), 0.05);
+  // A change next to an unconverged scene is not an answer's change: it does not cut the tail.
+  std::vector<bool> one_unconverged = converged;
+  one_unconverged[3] = false;
+  const CauchyRate u = cauchy_rate(eps, d, one_unconverged, TailRule{}, {0, 0, 0, 1, 0, 0, 0, 0});
+  EXPECT_TRUE(u.in_tail[0] && u.in_tail[1]);
+  // The rule can be switched off, and a change at the thinnest pair leaves too short a tail.
+  TailRule off;
+  off.after_status_changes = false;
+  EXPECT_EQ(cauchy_rate(eps, d, converged, off, changes).fit->points, 8);
+  EXPECT_FALSE(cauchy_rate(eps, d, converged, TailRule{}, {0, 0, 0, 0, 0, 0, 0, 1}).fit);
+  EXPECT_THROW(cauchy_rate(eps, d, converged, TailRule{}, {1, 0}), std::invalid_argument);
+}
+
 TEST(CauchyRate, RejectsAGridThatDoesNotDecrease) {
   EXPECT_THROW(cauchy_rate({1e-4, 1e-3}, {1.0}, {true, true}), std::invalid_argument);
   EXPECT_THROW(cauchy_rate({1e-3, 1e-4}, {1.0, 2.0}, {true, true}), std::invalid_argument);

@@ -186,6 +186,28 @@ def write_cauchy_rates(f, case, p, passed, measurable=True):
     c.attrs.update(dict(checked=",".join(checked), p_predicted=0.5, grid_ratio=10 ** -0.5))
 
 
+def write_controls(f):
+    """S2's controls: the quadrature of case (e) (a reach falling like ε^(−1/4)) and the two selections."""
+    q = f.create_group("studies/convergence/controls/quadrature")
+    eps = 10.0 ** -np.arange(4, 9)
+    q["eps"], q["reach"] = eps, 0.05 * eps ** -0.25
+    for side, p in (("selective", -0.3), ("rule", 0.45)):
+        s = q.create_group(side)
+        s["converged"] = np.ones(len(eps), np.int32)
+        s.create_dataset("layer_scene", data=strings([f"dovetail-layer-e-eps{e:g}-{side}" for e in eps]), dtype=STR)
+        s["zigzag_rms"] = np.full(len(eps), 0.2 if side == "selective" else 0.01)
+        s["d_sigma_N_away"] = 1e-3 * eps[:-1] ** p / eps[0] ** p
+        s.attrs.update(dict(slope_sigma_N_away=p, slope_sigma_N_away_stderr=0.01, fitted=1))
+    q.attrs.update(dict(law_case="e", reach_exponent=-0.25, reach_exponent_stderr=0.01, reach_fitted=1,
+                        predicted_reach_exponent=-0.25))
+    s = f.create_group("studies/convergence/controls/selection")
+    s.create_dataset("case", data=strings(["e", "e"]), dtype=STR)
+    s.create_dataset("quadrature", data=strings(["rule", "selective"]), dtype=STR)
+    s["eps"], s["converged"] = np.array([5e-4, 5e-4]), np.ones(2, np.int32)
+    s["spread_R_top"], s["cauchy_R_top"] = np.array([1e-12, 2.5e-5]), np.array([3e-4, 3e-4])
+    s.attrs["agreement"] = 1e-8
+
+
 def write_floor(f):
     g = f["studies/convergence"].create_group("floor")
     h = np.array([0.1, 0.05, 0.025])
@@ -324,6 +346,7 @@ def write_results(path, layout=True, failing=False, complete=True, version=2):
         write_cauchy_rates(f, "b", 0.5, passed=True)
         write_cauchy_rates(f, "d", 0.0, passed=False, measurable=False)
         write_floor(f)
+        write_controls(f)
         write_validity_and_thresholds(f)
         write_timing(f)
         write_timing_extras(f)
@@ -403,6 +426,13 @@ class ReportTest(unittest.TestCase):
         self.assertRegex(rates, r'<tr class="failrow"><td[^>]*>\(d\)</td>.*?not measurable <span class="fail">FAIL</span>')
         self.assertRegex(rates, r'<tr><td[^>]*>\(b\)</td><td[^>]*>0.5</td><td[^>]*>0.50 ± 0.01 <span class="pass">PASS</span>')
         self.assertIn("3.00e-03 (1.0e-06)", rates)  # the floor at h = 0.1 and its ε-part
+        # S2's controls: the quadrature's figure and table, the two selections' spreads.
+        controls = html[html.index('id="controls"'):html.index('id="validity"')]
+        self.assertIn("figures/control_quadrature.png", images)
+        self.assertIn("-0.25 ± 0.01 (derived -0.25)", controls)
+        self.assertIn("-0.30 ± 0.01", controls)  # selective integration's rate of σ_N away
+        self.assertIn("1.0e-12 / 3.0e-04", controls)
+        self.assertIn("2.5e-05 / 3.0e-04", controls)
         self.assertNothingLeftBehind()
 
     def test_without_layout_attributes_the_file_is_called_foreign(self):

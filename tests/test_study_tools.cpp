@@ -127,6 +127,12 @@ TEST(SceneCache, DefinitionsDifferInEveryField) {
   EXPECT_NE(base, limit_scene('d', 1e-8).definition(mesh));
   EXPECT_NE(base, layer_scene('d', 1e-3, 1e-8).definition(dovetail::MeshOptions{0.05, 0.1, 2}));
   EXPECT_EQ(base, layer_scene('d', 1e-3, 1e-8).definition(mesh));
+  DovetailSceneDef control = layer_scene('d', 1e-3, 1e-8);
+  control.quadrature = LayerQuadrature::Full;
+  EXPECT_NE(base, control.definition(mesh));
+  control = layer_scene('d', 1e-3, 1e-8);
+  control.selection = LayerSelection::PlusFace;
+  EXPECT_NE(base, control.definition(mesh));
   EXPECT_NE(definition_hash(base), definition_hash(layer_scene('d', 5e-4, 1e-8).definition(mesh)));
   // FNV-1a of the empty string is its offset basis: the hash is the standard one, stable across runs.
   EXPECT_EQ(definition_hash(""), 14695981039346656037ull);

@@ -109,7 +109,8 @@ BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, d
   add_bar_attributes(r, mesh, "layer", law_case, lambda_bar, mu_bar, eps);
   record_friction_path(r, options.friction_path, bar::friction);
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
-  scene.counts = finish_layer_record(r, model.bodies[1].material, layer.layer_elements, scene.layer_quality);
+  scene.counts = finish_layer_record(r, model.bodies[1].material, layer.layer_elements,
+                                     model.bodies[1].selective_integration, scene.layer_quality);
   return scene;
 }
 

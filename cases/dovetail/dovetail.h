@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cases/dovetail/dovetail_mesh.h"
+#include "cases/layer_quadrature.h"
 #include "core/fem/model.h"
 #include "core/interface/interface.h"
 
@@ -39,8 +40,10 @@ Model make_limit_model(const LimitMeshes& meshes);
 // The interface "S": plus = tenon, minus = base, normals pointing into the slot.
 Interface make_limit_interface(const Model& model, const InterfaceLaw& law);
 
-// Thin-layer mode: body 0 base, body 1 the floating layer (λ_ε, μ_ε), body 2 tenon.
-Model make_layer_model(const LayerMeshes& meshes, const Exponents& e);
+// Thin-layer mode: body 0 base, body 1 the floating layer (λ_ε, μ_ε), body 2 tenon. The
+// layer's quadrature follows cases/layer_quadrature.h unless `quadrature` says otherwise.
+Model make_layer_model(const LayerMeshes& meshes, const Exponents& e,
+                       LayerQuadrature quadrature = LayerQuadrature::ByExponents);
 // "S+" (plus = tenon, minus = layer) and "S-" (plus = layer, minus = base), Signorini-Coulomb
 // with coefficient f on both; node k of either is node k of the limit mode's S.
 std::vector<Interface> make_layer_interfaces(const Model& model, double f = friction);

@@ -91,7 +91,7 @@ DovetailScene solve_dovetail_limit(DovetailLimitBulk& bulk, const dovetail::Expo
 
 DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail::Exponents& e, double eps,
                                    const std::string& law_case, SolverKind solver, const SolverOptions& options,
-                                   double status_tolerance) {
+                                   double status_tolerance, LayerQuadrature quadrature) {
   const dovetail::Exponents x = dovetail::validated(e);
   if (!(eps > 0) || !std::isfinite(eps)) throw std::invalid_argument("eps must be finite and > 0");
   DovetailScene scene;
@@ -99,7 +99,7 @@ DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail
   const dovetail::LayerMeshes meshes = dovetail::make_layer_meshes(bulk.meshes(), eps, bulk.options().layer_elements);
   scene.meshing_time_s = elapsed_s(start);
   scene.layer_quality = mesh_quality(meshes.layer);
-  const Model model = dovetail::make_layer_model(meshes, x);
+  const Model model = dovetail::make_layer_model(meshes, x, quadrature);
   const LinearSystem system(model);
   const ContactProblem problem(system, dovetail::make_layer_interfaces(model, bulk.friction()));
   std::unique_ptr<CondensedInterface> condensed;
@@ -107,13 +107,16 @@ DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail
   scene.report = run_solver(problem, condensed.get(), solver, options);
 
   SceneRecord& r = scene.record;
-  r = record_scene(scene_id("layer", law_case, x, eps, solver, bulk), model, problem, scene.report,
-                   status_tolerance);
+  const bool selective = model.bodies[1].selective_integration;
+  std::string id = scene_id("layer", law_case, x, eps, solver, bulk);
+  if (selective != selective_layer_quadrature(x.gamma, x.delta)) id += std::string("-") + quadrature_name(selective);
+  r = record_scene(id, model, problem, scene.report, status_tolerance);
   add_dovetail_attributes(r, "layer", law_case, x, eps, bulk);
   record_friction_path(r, options.friction_path, bulk.friction());
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   r.numbers["meshing_time_s"] = scene.meshing_time_s;
-  scene.counts = finish_layer_record(r, model.bodies[1].material, bulk.options().layer_elements, scene.layer_quality);
+  scene.counts = finish_layer_record(r, model.bodies[1].material, bulk.options().layer_elements, selective,
+                                     scene.layer_quality);
   return scene;
 }
 

@@ -50,8 +50,12 @@ struct DovetailScene {
 DovetailScene solve_dovetail_limit(DovetailLimitBulk& bulk, const dovetail::Exponents& e,
                                    const std::string& law_case, SolverKind solver, const SolverOptions& options,
                                    double status_tolerance = default_status_tolerance);
+// The layer's quadrature follows cases/layer_quadrature.h; a control overrides it, and a scene
+// solved with another quadrature than the rule's says so in its id ("-selective", "-full") and
+// in its attribute layer_quadrature.
 DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail::Exponents& e, double eps,
                                    const std::string& law_case, SolverKind solver, const SolverOptions& options,
-                                   double status_tolerance = default_status_tolerance);
+                                   double status_tolerance = default_status_tolerance,
+                                   LayerQuadrature quadrature = LayerQuadrature::ByExponents);
 
 }  // namespace thinlayer

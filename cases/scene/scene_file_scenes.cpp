@@ -107,7 +107,8 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   r = record_scene(scene_id(spec, "layer", eps, solver), layer.model, problem, scene.report, status_tolerance);
   add_attributes(r, spec, "layer", eps, meshing);
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
-  scene.counts = finish_layer_record(r, layer.model.bodies[layer.layer_body].material, spec.layer_elements,
+  const Body& band = layer.model.bodies[layer.layer_body];
+  scene.counts = finish_layer_record(r, band.material, spec.layer_elements, band.selective_integration,
                                      layer.layer_quality);
   return scene;
 }

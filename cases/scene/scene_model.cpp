@@ -6,6 +6,8 @@
 #include <set>
 #include <sstream>
 
+#include "cases/layer_quadrature.h"
+
 namespace thinlayer {
 
 namespace {
@@ -213,9 +215,10 @@ SceneLayerModel make_scene_layer_model(const SceneSpec& spec, const SceneMeshes&
   out.layer_quality = mesh_quality(band);
   Body layer{"layer", band, Material{out.lambda_eps, out.mu_eps, spec.plane}};
   layer.floating = true;
-  // A nearly incompressible layer (γ < δ: λ_ε/μ_ε grows like 1/ε) locks with full integration;
-  // the dovetail's layer uses the same remedy (cases/dovetail/dovetail.cpp). Plane strain only.
-  layer.selective_integration = spec.plane == PlaneHypothesis::Strain;
+  // A nearly incompressible layer (γ < δ: λ_ε/μ_ε grows like 1/ε) locks with full integration,
+  // unless its zigzag mode is free under the selective rule (γ < 1 and γ < δ): the rule of
+  // cases/layer_quadrature.h, as for the dovetail. Selective integration is plane strain only.
+  layer.selective_integration = spec.plane == PlaneHypothesis::Strain && selective_layer_quadrature(glue.gamma, glue.delta);
   out.model.bodies.push_back(std::move(layer));
   out.layer_body = static_cast<int>(out.model.bodies.size()) - 1;
   add_supports_and_loads(spec, out.model);

@@ -28,6 +28,8 @@
 #include "studies/parallel/process_group.h"
 #include "studies/cli/report_runner.h"
 #include "studies/cli/results_file.h"
+#include "studies/drivers/quadrature_control.h"
+#include "studies/drivers/selection_control.h"
 #include "studies/drivers/skip_study.h"
 #include "studies/parallel/spread_command.h"
 #include "studies/drivers/stress_study.h"
@@ -212,6 +214,24 @@ StudyInput parse(const std::vector<std::string>& argv, const std::string& name) 
   return in;
 }
 
+// S2's controls behind the rates of the nearly incompressible layers (cases e, f), for the cases
+// asked: the quadrature (case e) and the two selections.
+void run_s2_controls(const StudyInput& in, DovetailSceneCache& cache, H5Writer* out, std::vector<Check>& checks) {
+  if (in.rates.cases.find('e') != std::string::npos) {
+    QuadratureControlOptions quadrature;
+    quadrature.eps.clear();  // the rate grid's thicknesses one decade apart (its own scenes)
+    for (size_t k = 0; k < in.rates.eps.size(); k += 2) quadrature.eps.push_back(in.rates.eps[k]);
+    quadrature.tolerance = in.rates.tolerance;
+    if (quadrature.eps.size() >= 2) run_quadrature_control(quadrature, cache, out);
+  }
+  SelectionControlOptions selection;
+  selection.cases.clear();
+  for (char c : std::string("ef"))
+    if (in.rates.cases.find(c) != std::string::npos) selection.cases += c;
+  selection.tolerance = in.rates.tolerance;
+  if (!selection.cases.empty()) run_selection_control(selection, cache, out, checks);
+}
+
 // S2, S3 and S4 as asked: they share one limit-mode bulk and one scene cache.
 std::vector<Check> run_asymptotic_studies(const StudyInput& in, bool s2, bool s3, bool s4, H5Writer* out) {
   std::vector<Check> checks;
@@ -222,6 +242,7 @@ std::vector<Check> run_asymptotic_studies(const StudyInput& in, bool s2, bool s3
     const ConvergenceResult samples = run_convergence_study(in.convergence, cache, out);
     checks = samples.checks;
     if (s2) run_cauchy_rates(in.rates, cache, out, checks);
+    if (s2) run_s2_controls(in, cache, out, checks);
     if (s2 && in.floor_study) run_floor_study(in.floor, cache, out, checks);
     else if (s2) std::printf("\nFloor (S2): skipped (--quick)\n");
     if (s3) {

@@ -35,7 +35,7 @@ CaseCauchy measure_case(char law_case, const CauchyStudyOptions& options, Doveta
     for (const auto& [q, e] : d.e) difference[q].push_back(e);
     c.status_changes.push_back(d.status_diff);
   }
-  for (const auto& [q, d] : difference) c.rate[q] = cauchy_rate(c.eps, d, c.converged, options.tail);
+  for (const auto& [q, d] : difference) c.rate[q] = cauchy_rate(c.eps, d, c.converged, options.tail, c.status_changes);
   for (const std::string& q : options.checked) {
     const auto& fit = c.rate.at(q).fit;
     c.pass[q] = fit && std::abs(fit->p - c.p_predicted) <= options.rate_tolerance;
@@ -63,6 +63,13 @@ void print_case(const CaseCauchy& c) {
   std::printf("  %-26s", "p (tail)");
   for (const std::string& q : printed) std::printf(" %12s", rate_text(c.rate.at(q).fit).c_str());
   std::printf("\n");
+  bool differs = false;
+  for (const std::string& q : printed) differs = differs || c.rate.at(q).fit_any_status.has_value() != c.rate.at(q).fit.has_value() ||
+                                                 (c.rate.at(q).fit && c.rate.at(q).fit->points != c.rate.at(q).fit_any_status->points);
+  if (!differs) return;
+  std::printf("  %-26s", "p (across status changes)");
+  for (const std::string& q : printed) std::printf(" %12s", rate_text(c.rate.at(q).fit_any_status).c_str());
+  std::printf("\n");
 }
 
 void write_case(H5Writer& out, const CaseCauchy& c, const CauchyStudyOptions& options) {
@@ -82,6 +89,9 @@ void write_case(H5Writer& out, const CaseCauchy& c, const CauchyStudyOptions& op
     out.attr(g, "C_" + q, r.fit ? r.fit->C : 0.0);
     out.attr(g, "points_" + q, r.fit ? r.fit->points : 0);
     out.attr(g, "fitted_" + q, r.fit ? 1 : 0);
+    out.attr(g, "p_" + q + "_any_status", r.fit_any_status ? r.fit_any_status->p : 0.0);
+    out.attr(g, "p_" + q + "_any_status_stderr", r.fit_any_status ? r.fit_any_status->p_stderr : 0.0);
+    out.attr(g, "fitted_" + q + "_any_status", r.fit_any_status ? 1 : 0);
   }
   for (const auto& [q, pass] : c.pass) out.attr(g, "pass_" + q, pass ? 1 : 0);
   out.attr(g, "p_predicted", c.p_predicted);
@@ -104,7 +114,8 @@ std::vector<CaseCauchy> run_cauchy_rates(const CauchyStudyOptions& options, Dove
 
   std::printf("\nConvergence rates (S2): Cauchy differences of the layer model along eps (grid ratio %s), relative\n"
               "to the distances' scales (mode_distance.h); scenes solved to residual %s; the rate is fitted on the\n"
-              "differences with eps_k <= %s whose two scenes converged, at least %d of them\n",
+              "differences with eps_k <= %s whose two scenes converged, below the last status change between converged\n"
+              "neighbours, at least %d of them\n",
               sci(options.eps.size() > 1 ? options.eps[1] / options.eps[0] : 0, 3).c_str(), sci(options.tolerance, 0).c_str(),
               sci(options.tail.eps_max, 0).c_str(), options.tail.min_differences);
   std::vector<CaseCauchy> result;

@@ -21,6 +21,7 @@ std::string DovetailSceneDef::definition(const dovetail::MeshOptions& mesh) cons
   s.precision(17);
   s << "dovetail|mode=" << mode << "|case=" << law_case << "|gamma=" << e.gamma << "|delta=" << e.delta
     << "|eps=" << (mode == "layer" ? eps : 0.0) << "|tolerance=" << tolerance << "|solver=fast"
+    << "|quadrature=" << static_cast<int>(quadrature) << "|selection=" << static_cast<int>(selection)
     << "|h_interface=" << mesh.h_interface << "|h_far=" << mesh.h_far << "|layer_elements=" << mesh.layer_elements;
   return s.str();
 }
@@ -51,10 +52,13 @@ DovetailScene DovetailSceneCache::compute(const DovetailSceneDef& def) {
   if (def.mode != "limit" && def.mode != "layer") throw std::invalid_argument("scene mode must be limit or layer");
   SolverOptions options;
   options.tolerance = def.tolerance;
+  options.layer_selection = def.selection;
   const dovetail::Exponents e = dovetail::exponents_of(def.law_case.at(0));
   DovetailScene s = def.mode == "limit"
                         ? solve_dovetail_limit(bulk_, e, def.law_case, SolverKind::Fast, options)
-                        : solve_dovetail_layer(bulk_, e, def.eps, def.law_case, SolverKind::Fast, options);
+                        : solve_dovetail_layer(bulk_, e, def.eps, def.law_case, SolverKind::Fast, options,
+                                               default_status_tolerance, def.quadrature);
+  if (def.mode == "layer" && def.selection == LayerSelection::PlusFace) s.record.id += "-plus";
   if (def.tolerance != SolverOptions{}.tolerance) {
     std::ostringstream id;
     id << s.record.id << "-tol" << def.tolerance;
@@ -73,6 +77,9 @@ std::string scene_label(const DovetailSceneDef& d) {
   std::ostringstream s;
   s << "case " << d.law_case << " " << d.mode;
   if (d.mode == "layer") s << " eps " << d.eps;
+  if (d.quadrature == LayerQuadrature::Selective) s << " selective";
+  if (d.quadrature == LayerQuadrature::Full) s << " full";
+  if (d.selection == LayerSelection::PlusFace) s << " plus-face selection";
   if (d.tolerance != SolverOptions{}.tolerance) s << " tol " << d.tolerance;
   return s.str();
 }

@@ -20,6 +20,11 @@ struct DovetailSceneDef {
   std::string law_case;           // Table 2 letter a..i
   double eps = 0;                 // layer mode only (L units)
   double tolerance = 1e-10;       // the SPEC residual the fast solver must reach
+  // Layer mode, controls only: the layer's quadrature against the rule of cases/layer_quadrature.h,
+  // and the face the selection spring holds (SolverOptions::layer_selection). A scene that
+  // departs from the defaults says so in its id ("-selective", "-full", "-plus").
+  LayerQuadrature quadrature = LayerQuadrature::ByExponents;
+  LayerSelection selection = LayerSelection::MinusFace;
   // Every field that changes the result, with the mesh's options, as canonical text.
   std::string definition(const dovetail::MeshOptions& mesh) const;
 };
