@@ -82,7 +82,7 @@ BoxQPRun solve_box_qp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const 
   // The fast primal–dual steps first, from a copy: if they settle, the primal active set below
   // only confirms the optimum (one step); if they cycle, it starts from the warm start.
   Eigen::VectorXd trial = x;
-  if (pdas(A, b, lo, hi, trial, 20, run)) x = trial;
+  if (pdas(A, b, lo, hi, trial, std::min(20, max_iterations), run)) x = trial;
   x = x.cwiseMax(lo).cwiseMin(hi);
   std::vector<Bound> bound(n, Bound::Free);
   for (int i = 0; i < n; ++i) {
@@ -95,7 +95,7 @@ BoxQPRun solve_box_qp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const 
   // (α = 0, a degenerate corner) switches to the textbook one release at a time, which cannot
   // cycle.
   bool release_all = true;
-  for (int iteration = 0; iteration < max_iterations; ++iteration) {
+  while (run.iterations < max_iterations) {  // the primal-dual steps count against the cap too
     ++run.iterations;
     const Eigen::VectorXd gradient = A * x + b;
     if (at_face_minimizer) {

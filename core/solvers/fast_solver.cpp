@@ -81,6 +81,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   ActiveSetRun run;
   int outer_steps = 0;   // floating layer: spring stages and proximal steps
   bool adrift = false;   // floating layer: the proximal steps kept following a pushed layer
+  bool capped = false;
   if (nw == 0) {
     run = active_set(c, problem, statuses, r, w, max_iterations);
     report.iterations = run.iterations;
@@ -95,8 +96,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
     run.singular = layer.singular;
     run.rcond = layer.rcond;
     adrift = layer.adrift;
-    // Its work is bounded by its stages; a cap is only the caller's.
-    max_iterations = options.max_iterations > 0 ? options.max_iterations : std::numeric_limits<int>::max();
+    capped = layer.capped;  // its work is bounded by its stages; a cap is only the caller's
   }
 
   report.r = r;
@@ -108,7 +108,8 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   // The worse of the two systems solved: the final active-set matrix and the bulk's CHOLMOD
   // factors (whose estimate is crude and optimistic, so it rarely decides).
   report.condition_estimate = 1.0 / std::max(std::min(run.rcond, condensed.rcond()), 1e-300);
-  report.stop_cause = stop_cause(c, statuses, run, report, report.iterations >= max_iterations, adrift);
+  report.stop_cause =
+      stop_cause(c, statuses, run, report, nw == 0 ? report.iterations >= max_iterations : capped, adrift);
   report.converged = report.stop_cause == StopCause::Converged;
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream msg;

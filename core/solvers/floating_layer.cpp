@@ -23,6 +23,7 @@ constexpr int settle_cap = 30;       // mixed Newton steps per stage or proximal
 constexpr int proximal_cap = 30;
 constexpr int max_refinements = 6;  // intermediate springs inserted between the mixed stages
 constexpr int anderson_memory = 5;
+constexpr int unlimited_solves = std::numeric_limits<int>::max();
 
 // The adherents' nodal stiffness along the interfaces (median, daN/mm): the spring's scale.
 double adherent_stiffness(const ContactProblem& problem) {
@@ -66,13 +67,15 @@ class BestIterate {
   const CondensedInterface& condensed_;
 };
 
-// The linear solves left under SolverOptions::max_iterations (unlimited when it is 0).
+// The linear solves left under SolverOptions::max_iterations (unlimited when it is 0). One solve
+// is kept back for the answer: the mixed solve of the statuses found so far (settle_mixed), so
+// that a capped solve still returns an iterate and never exceeds its cap.
 struct Budget {
   int cap = 0;
   int left(const FloatingLayerRun& run, int wanted) const {
-    return cap > 0 ? std::max(0, std::min(wanted, cap - run.newton_steps)) : wanted;
+    return cap > 0 ? std::max(0, std::min(wanted, cap - 1 - run.newton_steps)) : wanted;
   }
-  bool spent(const FloatingLayerRun& run) const { return cap > 0 && run.newton_steps >= cap; }
+  bool spent(const FloatingLayerRun& run) const { return cap > 0 && run.newton_steps >= cap - 1; }
 };
 
 // Stage 1: the statuses on the eliminated problem, from the previous stage's forces r.
@@ -85,17 +88,18 @@ void settle_eliminated(const Condensed& reduced, const ContactProblem& problem, 
   if (first.settled || budget.spent(run)) return;
   // The active set cycles (a non-associated law): the Tresca fixed point cannot; its statuses
   // then start a last active-set run.
-  const TrescaRun tresca = solve_tresca_fixed_point(reduced, r);
+  const TrescaRun tresca = solve_tresca_fixed_point(reduced, r, 100, 1e-10, budget.left(run, unlimited_solves));
   run.newton_steps += tresca.qp_iterations;
   statuses = guess_statuses(reduced, r, jump_part(reduced, r, none));
-  run.newton_steps += active_set(reduced, problem, statuses, r, none, std::max(1, budget.left(run, settle_cap))).iterations;
+  run.newton_steps += active_set(reduced, problem, statuses, r, none, budget.left(run, settle_cap)).iterations;
 }
 
 // Newton steps on the mixed (r, x) system until the statuses reproduce themselves; `last` is the
 // last step's system (for its conditioning).
 bool settle_mixed(const Condensed& c, const Budget& budget, std::vector<Active>& statuses, Eigen::VectorXd& r,
                   Eigen::VectorXd& x, Step& last, FloatingLayerRun& run) {
-  const int steps = std::max(1, budget.left(run, settle_cap));  // one solve at least: the answer's
+  const int steps = std::max(1, budget.left(run, settle_cap));  // one solve at least: the answer's,
+                                                                 // which the budget keeps back
   for (int step = 0; step < steps; ++step) {
     last = solve_statuses(c, statuses);
     ++run.newton_steps;
@@ -215,7 +219,8 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
       if (fraction < 1e-3) break;
     }
   }
-  run.adrift = !(run.residual <= options.tolerance) && settled_in_a_row >= 5 && !budget.spent(run);
+  run.capped = budget.spent(run);
+  run.adrift = !(run.residual <= options.tolerance) && settled_in_a_row >= 5 && !run.capped;
   if (!(run.residual <= options.tolerance) || floating_bodies_free(c, run.statuses)) {
     // Not converged, or the layer touches nothing: report the conditioning of the true
     // (spring-free) problem with these statuses, which says whether the layer was left free.

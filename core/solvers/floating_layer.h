@@ -43,6 +43,7 @@ struct FloatingLayerRun {
   double residual = 0;    // the true SPEC residual of (r, x), the best met
   bool adrift = false;    // not converged, and the last proximal steps each re-settled the same
                           // statuses: the layer is being followed along a push, not searched for
+  bool capped = false;    // SolverOptions::max_iterations ran out (the answer's solve kept back)
 };
 
 // c: the scene's condensed problem with its floating unknowns x (S without spring); r, x: the

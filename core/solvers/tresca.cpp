@@ -19,7 +19,8 @@ Eigen::VectorXd thresholds(const Condensed& c, const Eigen::VectorXd& r) {
 
 }  // namespace
 
-TrescaRun solve_tresca_fixed_point(const Condensed& c, Eigen::VectorXd& r, int max_updates, double tolerance) {
+TrescaRun solve_tresca_fixed_point(const Condensed& c, Eigen::VectorXd& r, int max_updates, double tolerance,
+                                   int max_qp_iterations) {
   const int m = static_cast<int>(c.normal.size());
   const double infinity = std::numeric_limits<double>::infinity();
   TrescaRun run;
@@ -38,7 +39,8 @@ TrescaRun solve_tresca_fixed_point(const Condensed& c, Eigen::VectorXd& r, int m
       lo[2 * k + 1] = -s[k];
       hi[2 * k + 1] = s[k];
     }
-    const BoxQPRun qp = solve_box_qp(c.W, c.g0, lo, hi, r);
+    if (run.qp_iterations >= max_qp_iterations) break;
+    const BoxQPRun qp = solve_box_qp(c.W, c.g0, lo, hi, r, max_qp_iterations - run.qp_iterations);
     run.qp_iterations += qp.iterations;
     const Eigen::VectorXd image = thresholds(c, r);
     const double change = (image - s).norm() / std::max(image.norm(), 1e-300);

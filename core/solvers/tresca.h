@@ -9,6 +9,8 @@
 // The floating-layer solver falls back on it where the active-set method cycles.
 #include <Eigen/Core>
 
+#include <limits>
+
 #include "core/solvers/active_set.h"
 
 namespace thinlayer {
@@ -20,8 +22,10 @@ struct TrescaRun {
                            // or below 1e-6 and no longer falling (the solves' noise)
 };
 
-// From r (warm start), on a problem with no floating unknowns.
+// From r (warm start), on a problem with no floating unknowns; at most max_qp_iterations linear
+// solves in all (the caller's budget).
 TrescaRun solve_tresca_fixed_point(const Condensed& c, Eigen::VectorXd& r, int max_updates = 100,
-                                   double tolerance = 1e-10);
+                                   double tolerance = 1e-10,
+                                   int max_qp_iterations = std::numeric_limits<int>::max());
 
 }  // namespace thinlayer
