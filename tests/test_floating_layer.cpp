@@ -128,6 +128,24 @@ TEST(FloatingLayer, ConvergesTheScenesEarlierSolversCouldNot) {
   }
 }
 
+// An answer at tolerance 1e-10 is as accurate as one solved on to 1e-13: past the tolerance the
+// solver polishes towards the round-off floor (core/solvers/floating_layer.cpp, polish_factor).
+// The dovetail's case (d) at ε = 1e-6: stopped at the first iterate under 1e-10 (3.9e-11), its
+// tenon reaction was 2.9e-8 from the tightly solved one, 1e5 times the tolerance it claimed.
+TEST(FloatingLayer, AnAnswerAtTheToleranceIsAsAccurateAsOneSolvedFurther) {
+  const DovetailLimitBulk bulk;
+  SolverOptions tight;
+  tight.tolerance = 1e-13;
+  const DovetailScene at_tolerance =
+      solve_dovetail_layer(bulk, dovetail::exponents_of('d'), 1e-6, "d", SolverKind::Fast, SolverOptions{});
+  const DovetailScene further = solve_dovetail_layer(bulk, dovetail::exponents_of('d'), 1e-6, "d", SolverKind::Fast, tight);
+  ASSERT_TRUE(at_tolerance.report.converged) << at_tolerance.report.message;
+  ASSERT_LT(further.report.residual.value(), at_tolerance.report.residual.value() * 1.01);
+  const Eigen::Vector2d a = at_tolerance.record.reactions.at("tenon_top");
+  const Eigen::Vector2d b = further.record.reactions.at("tenon_top");
+  EXPECT_LT((a - b).norm() / b.norm(), 1e-8);
+}
+
 // The bar's row 1 at ε = 1e-6: a layer a million times stiffer than the bar, carried 1e-2 mm
 // along while compressed by 4e-9 mm. A displacement stored in double holds that compression to
 // its last digits only, and the per-body residual of any such answer has a round-off floor near
