@@ -11,7 +11,8 @@
 // (ε = 1e-2 … 1e-4), its nine cases at ε = 1e-6 and 1e-8, the bar's six Table 3 rows in layer
 // mode at ε = 1e-2 … 1e-8, and the layer scenes of `study stress` (stiffness contrast; the free
 // layer, which must say "singular"). Timing is setup (factorisations, condensation) plus solve;
-// meshing excluded. Times are of a shared machine: compare within one run.
+// meshing excluded. Times are of a shared machine: compare within one run. One BLAS thread, as
+// in every study (studies/parallel/blas_threads.h): the same bits, so the same solver paths.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -28,6 +29,7 @@
 #include "core/io/reference_tables.h"
 #include "cases/bar/bar_scenes.h"
 #include "cases/dovetail/dovetail_scenes.h"
+#include "studies/parallel/blas_threads.h"
 
 namespace thinlayer {
 namespace {
@@ -187,4 +189,7 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace thinlayer
 
-int main(int argc, char** argv) { return thinlayer::run(argc, argv); }
+int main(int argc, char** argv) {
+  thinlayer::use_one_blas_thread();
+  return thinlayer::run(argc, argv);
+}
