@@ -8,30 +8,16 @@
 #include <Eigen/Dense>
 
 #include "core/linalg/connected_components.h"
+#include "core/linalg/sparse_block.h"
 
 namespace thinlayer {
 
 namespace {
 
-// Rows `rows` and columns `cols` of a sparse matrix.
-Eigen::SparseMatrix<double> block(const Eigen::SparseMatrix<double>& A, const std::vector<int>& rows,
-                                  const std::vector<int>& cols) {
-  std::vector<int> row_of(A.rows(), -1), col_of(A.cols(), -1);
-  for (size_t i = 0; i < rows.size(); ++i) row_of[rows[i]] = static_cast<int>(i);
-  for (size_t j = 0; j < cols.size(); ++j) col_of[cols[j]] = static_cast<int>(j);
-  std::vector<Eigen::Triplet<double>> t;
-  for (int c = 0; c < A.outerSize(); ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it)
-      if (row_of[it.row()] >= 0 && col_of[it.col()] >= 0) t.emplace_back(row_of[it.row()], col_of[it.col()], it.value());
-  Eigen::SparseMatrix<double> out(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
-  out.setFromTriplets(t.begin(), t.end());
-  return out;
-}
-
 // Rows and columns `idx` (ascending) of a sparse matrix: the principal block of one body.
 // Column by column in order, its entries already sorted, so no triplets and no sort: it is on
 // the path of every limit-mode solve: the dovetail's two bodies at h = 0.0125 in 0.9 ms, where
-// block() (every column, triplets, a sort) took 3.8 ms, a tenth of a linear solve.
+// sparse_block() (every column, triplets, a sort) took 3.8 ms, a tenth of a linear solve.
 Eigen::SparseMatrix<double> principal_block(const Eigen::SparseMatrix<double>& A, const std::vector<int>& idx) {
   std::vector<int> position(A.rows(), -1);
   for (size_t k = 0; k < idx.size(); ++k) position[idx[k]] = static_cast<int>(k);
@@ -105,7 +91,7 @@ void CondensedInterface::condense_supported(const ContactProblem& problem, std::
   // All supported (limit mode): K and B as they are, no copies.
   const bool whole = static_cast<int>(supported_.size()) == system.num_free();
   Eigen::SparseMatrix<double> K_s, B_s;
-  if (!whole) K_s = principal_block(system.K(), supported_), B_s = block(B, all_indices(rows), supported_);
+  if (!whole) K_s = principal_block(system.K(), supported_), B_s = sparse_block(B, all_indices(rows), supported_);
   factor_ = std::make_shared<SparseCholesky>(whole ? system.K() : K_s);
   const Eigen::SparseMatrix<double>& B_supported = whole ? B : B_s;
   W_ = factor_->inverse_congruence(B_supported);
@@ -137,7 +123,7 @@ void CondensedInterface::condense_floating(const ContactProblem& problem, const 
   f_L_ = Eigen::VectorXd::Zero(size);
   int offset = 0;
   for (const FloatingCondensation& f : floating_) {
-    B_L_.middleCols(offset, f.size()) = Eigen::MatrixXd(block(B, all_indices(static_cast<int>(B.rows())), f.face_dofs())) * f.T();
+    B_L_.middleCols(offset, f.size()) = Eigen::MatrixXd(sparse_block(B, all_indices(static_cast<int>(B.rows())), f.face_dofs())) * f.T();
     S_.block(offset, offset, f.size(), f.size()) = f.S();
     f_L_.segment(offset, f.size()) = f.f();
     offset += f.size();

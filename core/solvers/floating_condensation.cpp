@@ -5,24 +5,11 @@
 
 #include <Eigen/Dense>
 
+#include "core/linalg/sparse_block.h"
+
 namespace thinlayer {
 
 namespace {
-
-// Rows `rows` and columns `cols` of a sparse matrix.
-Eigen::SparseMatrix<double> submatrix(const Eigen::SparseMatrix<double>& A, const std::vector<int>& rows,
-                                      const std::vector<int>& cols) {
-  std::vector<int> row_of(A.rows(), -1), col_of(A.cols(), -1);
-  for (size_t i = 0; i < rows.size(); ++i) row_of[rows[i]] = static_cast<int>(i);
-  for (size_t j = 0; j < cols.size(); ++j) col_of[cols[j]] = static_cast<int>(j);
-  std::vector<Eigen::Triplet<double>> t;
-  for (int c = 0; c < A.outerSize(); ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it)
-      if (row_of[it.row()] >= 0 && col_of[it.col()] >= 0) t.emplace_back(row_of[it.row()], col_of[it.col()], it.value());
-  Eigen::SparseMatrix<double> out(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
-  out.setFromTriplets(t.begin(), t.end());
-  return out;
-}
 
 Eigen::VectorXd take(const Eigen::VectorXd& v, const std::vector<int>& idx) {
   Eigen::VectorXd out(idx.size());
@@ -39,12 +26,12 @@ void FloatingCondensation::condense(const Eigen::SparseMatrix<double>& K, const 
   for (int k : kept) is_kept[k] = true;
   for (int z = 0; z < K.rows(); ++z)
     if (!is_kept[z]) interior_.push_back(z);
-  S_ = Eigen::MatrixXd(submatrix(K, kept_, kept_));
+  S_ = Eigen::MatrixXd(sparse_block(K, kept_, kept_));
   f_ = take(F, kept_);
   if (!interior_.empty()) {
     // The interior with x held is an ordinary supported problem: factor it (CHOLMOD).
-    interior_factor_ = std::make_shared<SparseCholesky>(submatrix(K, interior_, interior_));
-    K_ix_ = submatrix(K, interior_, kept_);
+    interior_factor_ = std::make_shared<SparseCholesky>(sparse_block(K, interior_, interior_));
+    K_ix_ = sparse_block(K, interior_, kept_);
     F_i_ = take(F, interior_);
     const Eigen::MatrixXd Y = interior_factor_->solve(Eigen::MatrixXd(K_ix_));  // K_ii⁻¹ K_ix
     S_ -= K_ix_.transpose() * Y;
@@ -99,7 +86,7 @@ FloatingCondensation FloatingCondensation::nodal(const LinearSystem& system, con
       kept.push_back(static_cast<int>(a));
       out.face_dofs_.push_back(body_dofs[a]);
     }
-  const Eigen::SparseMatrix<double> K = submatrix(system.K(), body_dofs, body_dofs);
+  const Eigen::SparseMatrix<double> K = sparse_block(system.K(), body_dofs, body_dofs);
   out.condense(K, take(system.F(), body_dofs), kept);
   out.T_.resize(static_cast<Eigen::Index>(kept.size()), static_cast<Eigen::Index>(kept.size()));
   out.T_.setIdentity();
