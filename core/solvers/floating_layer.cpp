@@ -21,11 +21,11 @@ constexpr int mixed_stages[] = {10, 12};
 constexpr int active_set_cap = 60;   // active-set steps per stage before the Tresca fixed point
 constexpr int settle_cap = 30;       // mixed Newton steps per stage or proximal step
 constexpr int proximal_cap = 30;
-// Past the tolerance the proximal steps go on towards the round-off floor while each one improves
-// the answer (at most `polish_cap` of them): at tolerance 1e-10 the dovetail's case (d) at
+// Past the tolerance the proximal steps go on towards the round-off floor while they still improve
+// the answer (at most `polish_cap` of them, ending after `polish_patience` in a row that do not): at tolerance 1e-10 the dovetail's case (d) at
 // ε = 1e-6 stops at residual 3.9e-11 with its tenon reaction 2.9e-8 from the answer at 3.3e-13
 // (measured); a few more steps of the same linear map make the digits the residual suggests true.
-constexpr double polish_factor = 1e-2;  // aim at tolerance × this; stop earlier at the floor
+constexpr double polish_factor = 1e-2;  // aim at tolerance × this; stop earlier where steps stall
 constexpr int polish_cap = 10;
 constexpr int polish_patience = 3;
 constexpr int max_refinements = 6;  // intermediate springs inserted between the mixed stages
@@ -57,10 +57,8 @@ class BestIterate {
   // The candidate (r, x) of the last mixed solve, whose conditioning is in `last`.
   double consider(const Eigen::VectorXd& r, const Eigen::VectorXd& x, const std::vector<Active>& statuses,
                   const Step& last, FloatingLayerRun& run) const {
-    const Residual true_residual = contact_residual(problem_, condensed_.displacement(problem_, r, x), r);
-    const double residual = true_residual.value();
+    const double residual = contact_residual(problem_, condensed_.displacement(problem_, r, x), r).value();
     if (residual < run.residual) {
-      run.floor = true_residual.floor();
       run.r = r;
       run.x = x;
       run.statuses = statuses;

@@ -41,7 +41,6 @@ struct FloatingLayerRun {
   bool singular = false;
   double rcond = 1;
   double residual = 0;    // the true SPEC residual of (r, x), the best met
-  double floor = 0;       // its round-off floor (Residual::floor)
   bool adrift = false;    // not converged, and the last proximal steps each re-settled the same
                           // statuses: the layer is being followed along a push, not searched for
   bool capped = false;    // SolverOptions::max_iterations ran out (the answer's solve kept back)
