@@ -170,17 +170,18 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     if (budget.spent(run) && std::isfinite(run.residual)) break;
     ++run.outer_steps;
     const double k = targets.front();
-    const Condensed reduced = eliminate_layer(c, spring(k), rest);
+    const Eigen::MatrixXd K_s = spring(k);
+    const Condensed reduced = eliminate_layer(c, K_s, rest);
     statuses = settled_statuses;
     r = settled_r;
-    bool settled = settle_mixed(mixed_problem(c, spring(k), rest, reduced.kappa), budget, statuses, r, x, last_step, run);
+    bool settled = settle_mixed(mixed_problem(c, K_s, rest, reduced.kappa), budget, statuses, r, x, last_step, run);
     if (!settled && !budget.spent(run)) {
       // The weaker spring frees the layer more than full Newton steps can follow: find the
       // statuses on the eliminated layer (coarse but robust at this spring), then settle them.
       statuses = settled_statuses;
       r = settled_r;
       settle_eliminated(reduced, problem, budget, statuses, r, run);
-      settled = settle_mixed(mixed_problem(c, spring(k), rest, reduced.kappa), budget, statuses, r, x, last_step, run);
+      settled = settle_mixed(mixed_problem(c, K_s, rest, reduced.kappa), budget, statuses, r, x, last_step, run);
     }
     report(settled ? "mixed," : "mixed (not settled),", k, best.consider(r, x, statuses, last_step, run));
     if (!settled && refinements < max_refinements && k - last > 0.25) {
@@ -202,6 +203,7 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
   Eigen::VectorXd anchor = rest, proposal = settled_x;
   double fraction = 1;
   int settled_in_a_row = 0;
+  const Eigen::MatrixXd K_last = spring(last);  // the proximal steps' spring, fixed; only its anchor moves
   auto polished = [&] { return run.residual <= options.tolerance * polish_factor; };
   int polish_steps = 0, stale = 0;
   for (int step = 0; step < proximal_cap && !polished() && !budget.spent(run); ++step) {
@@ -214,7 +216,7 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     x = settled_x;
     statuses = settled_statuses;
     const bool settled =
-        settle_mixed(mixed_problem(c, spring(last), trial, kappa_last), budget, statuses, r, x, last_step, run);
+        settle_mixed(mixed_problem(c, K_last, trial, kappa_last), budget, statuses, r, x, last_step, run);
     report(polishing ? "proximal (polish)," : "proximal,", last, best.consider(r, x, statuses, last_step, run));
     // At the floor of what these steps reach once three in a row improve nothing.
     stale = polishing && !(run.residual < before) ? stale + 1 : 0;
