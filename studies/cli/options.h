@@ -18,8 +18,8 @@ namespace thinlayer {
   "                       (a reproducible pseudo-random pattern; stress tests)\n" \
   "  --load-scale S       bar: multiply the tractions F1, F2 by S (-1 lifts the bar off AD)\n" \
   "  --tolerance T        SPEC residual to reach (default 1e-10)\n" \
-  "  --max-iterations N   solver iteration cap, N >= 1 (default: fast 200, 1000 with a floating\n" \
-  "                       layer; relaxation 100000 sweeps)\n" \
+  "  --max-iterations N   solver iteration cap, N >= 1 (default: fast 200; with a floating layer\n" \
+  "                       none, its spring stages bound the work; relaxation 100000 sweeps)\n" \
   "  --omega W            relaxation's over-relaxation coefficient in (0, 2) (default 1.8)\n"
 
 inline const std::set<std::string> mesh_and_solver_options = {"nx", "ny", "element", "diagonal", "plane", "distortion", "load-scale",
