@@ -71,6 +71,20 @@ TEST(ColumnBasis, IsTheNodalStiffnessInAnotherBasis) {
   }
 }
 
+// Forces go to the column basis by Tᵀ (column_forces) and back by nodal_forces, its exact inverse;
+// nodal_force_bound bounds what round-off in column forces becomes in nodal ones.
+TEST(ColumnBasis, NodalForcesInvertColumnForces) {
+  const Mesh band = straight_band(6, 1e-3);
+  const BandLayout layout = *band_layout(band);
+  const Eigen::VectorXd f = Eigen::VectorXd::Random(2 * layout.columns * (layout.across + 1));
+  const Eigen::VectorXd column = column_forces(f, layout);
+  EXPECT_NEAR((column - basis_map(layout).transpose() * f).norm(), 0.0, 1e-14);
+  EXPECT_LT((nodal_forces(column, layout) - f).norm(), 1e-14 * f.norm());
+  const Eigen::VectorXd bound = nodal_force_bound(column.cwiseAbs(), layout);
+  EXPECT_TRUE((bound.array() >= nodal_forces(column, layout).cwiseAbs().array()).all());
+  EXPECT_GT(bound.sum(), f.cwiseAbs().sum());  // a foot's bound sums its column's magnitudes
+}
+
 // At ε = 1e-8 a film's in-plane stiffness is 1e-16 of its through-thickness one. The column basis
 // integrates it directly: a rigid translation costs nothing, and a uniform in-plane stretch
 // t_x = a·x costs the membrane energy ½ E' ε a² L (plane strain, the layer free through its

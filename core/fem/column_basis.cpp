@@ -137,6 +137,33 @@ Eigen::VectorXd column_forces(const Eigen::VectorXd& nodal_forces, const BandLay
   return z;
 }
 
+namespace {
+
+// sign −1: the inverse of column_forces; +1: its bound.
+Eigen::VectorXd to_nodal(const Eigen::VectorXd& column, const BandLayout& layout, double sign) {
+  Eigen::VectorXd f(2 * layout.columns * (layout.across + 1));
+  for (int i = 0; i < layout.columns; ++i)
+    for (int c = 0; c < 2; ++c) {
+      double foot = column[layout.t(i) + c];
+      for (int j = 1; j <= layout.across; ++j) {
+        f[2 * layout.node(i, j) + c] = column[layout.v(i, j) + c];
+        foot += sign * column[layout.v(i, j) + c];
+      }
+      f[2 * layout.node(i, 0) + c] = foot;
+    }
+  return f;
+}
+
+}  // namespace
+
+Eigen::VectorXd nodal_forces(const Eigen::VectorXd& column_forces, const BandLayout& layout) {
+  return to_nodal(column_forces, layout, -1.0);
+}
+
+Eigen::VectorXd nodal_force_bound(const Eigen::VectorXd& column_bound, const BandLayout& layout) {
+  return to_nodal(column_bound, layout, 1.0);
+}
+
 Eigen::VectorXd nodal_displacements(const Eigen::VectorXd& z, const BandLayout& layout) {
   Eigen::VectorXd u(2 * layout.columns * (layout.across + 1));
   for (int i = 0; i < layout.columns; ++i)

@@ -51,6 +51,13 @@ Eigen::SparseMatrix<double> column_stiffness(const Mesh& mesh, const BandLayout&
 // Nodal values (2 per node, in node order) to the column basis and back. Forces transform with
 // the transpose of the displacements' map: a translation takes the sum of its column's forces.
 Eigen::VectorXd column_forces(const Eigen::VectorXd& nodal_forces, const BandLayout& layout);
+// The inverse of column_forces: the nodal forces whose column forces these are (a node above the
+// foot takes its v force; the foot takes its column's t force less those). Exact maps of ±1
+// sums, so a body's imbalance evaluated in the column basis keeps its digits in nodal form.
+Eigen::VectorXd nodal_forces(const Eigen::VectorXd& column_forces, const BandLayout& layout);
+// A bound on the nodal forces from bounds on their column forces (the same map with every sign +):
+// how round-off in column forces carries over to nodal ones.
+Eigen::VectorXd nodal_force_bound(const Eigen::VectorXd& column_bound, const BandLayout& layout);
 Eigen::VectorXd nodal_displacements(const Eigen::VectorXd& z, const BandLayout& layout);
 
 }  // namespace thinlayer

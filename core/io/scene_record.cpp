@@ -101,6 +101,7 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   // SPEC §1.5: each body's and each interface's residual, with their names.
   s.residual_per_body = report.residual.per_body;
   s.residual_floor_per_body = report.residual.per_body_floor;
+  s.residual_nodal_floor_per_body = report.residual.per_body_nodal_floor;
   s.residual_per_interface = report.residual.per_interface;
   for (const Interface& i : problem.interfaces()) s.interface_names.push_back(i.name);
   s.numbers["tolerance"] = report.tolerance;
@@ -130,6 +131,8 @@ void require_finite_results(const SceneRecord& scene) {
     if (scene.numbers.count(name)) check(name, &scene.numbers.at(name), &scene.numbers.at(name) + 1);
   check("residual_per_body", scene.residual_per_body.begin(), scene.residual_per_body.end());
   check("residual_floor_per_body", scene.residual_floor_per_body.begin(), scene.residual_floor_per_body.end());
+  check("residual_nodal_floor_per_body", scene.residual_nodal_floor_per_body.begin(),
+        scene.residual_nodal_floor_per_body.end());
   check("residual_per_interface", scene.residual_per_interface.begin(), scene.residual_per_interface.end());
 }
 
@@ -209,16 +212,29 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
   };
   if (!scene.residual_per_body.empty()) {
     file.dataset(g + "/residual_per_body", scene.residual_per_body);
+    with_unit(g + "/residual_per_body", "residual_per_body");
     file.attr(g + "/residual_per_body", "bodies", joined(scene.body_names));
   }
   if (!scene.residual_floor_per_body.empty()) {
     // What double precision can resolve of each body's residual for this answer (the residual
     // cannot be expected below it): Residual::per_body_floor.
     file.dataset(g + "/residual_floor_per_body", scene.residual_floor_per_body);
+    with_unit(g + "/residual_floor_per_body", "residual_floor_per_body");
     file.attr(g + "/residual_floor_per_body", "bodies", joined(scene.body_names));
+    file.attr(g + "/residual_floor_per_body", "evaluation",
+              "a layer band's balance in its column basis (its digits kept), every other body nodally");
+  }
+  if (!scene.residual_nodal_floor_per_body.empty()) {
+    // A user re-evaluating K u from the written nodal `u` resolves a body's residual only to this.
+    file.dataset(g + "/residual_nodal_floor_per_body", scene.residual_nodal_floor_per_body);
+    with_unit(g + "/residual_nodal_floor_per_body", "residual_nodal_floor_per_body");
+    file.attr(g + "/residual_nodal_floor_per_body", "bodies", joined(scene.body_names));
+    file.attr(g + "/residual_nodal_floor_per_body", "evaluation",
+              "K_b u_b from the nodal u as written: what re-evaluating the file's u resolves");
   }
   if (!scene.residual_per_interface.empty()) {
     file.dataset(g + "/residual_per_interface", scene.residual_per_interface);
+    with_unit(g + "/residual_per_interface", "residual_per_interface");
     file.attr(g + "/residual_per_interface", "interfaces", joined(scene.interface_names));
   }
 }

@@ -45,6 +45,7 @@ struct SceneRecord {
   // SPEC §1.5: the residual of each body and each interface (dimensionless), with their names.
   std::vector<double> residual_per_body, residual_per_interface;
   std::vector<double> residual_floor_per_body;  // Residual::per_body_floor: round-off's share
+  std::vector<double> residual_nodal_floor_per_body;  // Residual::per_body_nodal_floor
   std::vector<std::string> interface_names;  // (the bodies: body_names above)
 };
 

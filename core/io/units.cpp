@@ -42,6 +42,10 @@ std::string unit_of(const std::string& name) {
       {"sigma_T", "daN/mm^2"},
       {"cell_stress", "daN/mm^2"},
       {"reactions", "daN/mm (per mm of thickness)"},
+      {"residual_per_body", "1 (relative)"},
+      {"residual_per_interface", "1 (relative)"},
+      {"residual_floor_per_body", "1 (relative)"},
+      {"residual_nodal_floor_per_body", "1 (relative)"},
   };
   auto it = units.find(name);
   return it == units.end() ? "" : it->second;

@@ -130,6 +130,16 @@ void CondensedInterface::condense_floating(const ContactProblem& problem, const 
   }
 }
 
+std::vector<Eigen::VectorXd> CondensedInterface::band_coordinates(const Eigen::VectorXd& x) const {
+  std::vector<Eigen::VectorXd> z;
+  int offset = 0;
+  for (const FloatingCondensation& f : floating_) {
+    if (f.is_band()) z.push_back(x.segment(offset, f.size()));
+    offset += f.size();
+  }
+  return z;
+}
+
 Eigen::MatrixXd CondensedInterface::floating_selection(LayerSelection face) const {
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(S_.rows(), S_.cols());
   int offset = 0;

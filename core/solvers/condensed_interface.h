@@ -48,6 +48,9 @@ class CondensedInterface {
   // Bulk displacement (free DOFs) for interface forces r and floating-body unknowns x.
   Eigen::VectorXd displacement(const ContactProblem& problem, const Eigen::VectorXd& r,
                                const Eigen::VectorXd& x) const;
+  // Each layer band's displacement in its column basis (LinearSystem::floating_bands order), cut
+  // out of x: what contact_residual evaluates a band's balance on.
+  std::vector<Eigen::VectorXd> band_coordinates(const Eigen::VectorXd& x) const;
   double setup_time_s() const { return setup_time_s_; }  // factorisations + condensation
   // The smallest of the factors' SparseCholesky::rcond() (1 if none): a crude, optimistic
   // estimate, for reporting a loss of accuracy.

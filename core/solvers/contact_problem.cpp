@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+
+#include "core/fem/column_basis.h"
 
 namespace thinlayer {
 
@@ -80,8 +83,34 @@ double Residual::floor() const {
   return per_body_floor.empty() ? 0.0 : *std::max_element(per_body_floor.begin(), per_body_floor.end());
 }
 
+namespace {
+
+// A band's imbalance and its round-off bound, evaluated in its column basis and written over the
+// nodal ones at its free DOFs.
+void band_imbalance(const FloatingBand& band, const Eigen::VectorXd& z, const Eigen::VectorXd& interface_force,
+                    const Eigen::VectorXd& interface_force_bound, Eigen::VectorXd& imbalance,
+                    Eigen::VectorXd& magnitude) {
+  const int n = static_cast<int>(band.free_dof.size());
+  Eigen::VectorXd contact(n), contact_bound(n);
+  for (int k = 0; k < n; ++k) {
+    contact[k] = interface_force[band.free_dof[k]];
+    contact_bound[k] = interface_force_bound[band.free_dof[k]];
+  }
+  const Eigen::VectorXd column = band.K * z - band.F - column_forces(contact, band.layout);
+  const Eigen::VectorXd column_bound = band.K.cwiseAbs() * z.cwiseAbs() + band.F.cwiseAbs() +
+                                       column_forces(contact_bound, band.layout);
+  const Eigen::VectorXd nodal = nodal_forces(column, band.layout);
+  const Eigen::VectorXd nodal_bound = nodal_force_bound(column_bound, band.layout);
+  for (int k = 0; k < n; ++k) {
+    imbalance[band.free_dof[k]] = nodal[k];
+    magnitude[band.free_dof[k]] = nodal_bound[k];
+  }
+}
+
+}  // namespace
+
 Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& u_free,
-                          const Eigen::VectorXd& r) {
+                          const Eigen::VectorXd& r, const std::vector<Eigen::VectorXd>& band_z) {
   const LinearSystem& system = problem.system();
   const double floor = residual_load_floor * system.F().norm();
   auto relative = [floor](double norm2, double scale2) {
@@ -92,22 +121,35 @@ Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& 
 
   // Bulk, body by body: the imbalance and the forces on each body's own DOFs.
   const Eigen::VectorXd interface_force = problem.B().transpose() * r;
-  const Eigen::VectorXd imbalance = system.K() * u_free - system.F() - interface_force;
-  const Eigen::VectorXd magnitude = system.K().cwiseAbs() * u_free.cwiseAbs() + system.F().cwiseAbs() +
-                                    problem.B().cwiseAbs().transpose() * r.cwiseAbs();
+  Eigen::VectorXd imbalance = system.K() * u_free - system.F() - interface_force;
+  const Eigen::VectorXd interface_force_bound = problem.B().cwiseAbs().transpose() * r.cwiseAbs();
+  const Eigen::VectorXd nodal_magnitude =
+      system.K().cwiseAbs() * u_free.cwiseAbs() + system.F().cwiseAbs() + interface_force_bound;
+  Eigen::VectorXd magnitude = nodal_magnitude;
+  if (!band_z.empty()) {
+    const std::vector<FloatingBand>& bands = system.floating_bands();
+    if (band_z.size() != bands.size())
+      throw std::invalid_argument("contact_residual: " + std::to_string(band_z.size()) + " band displacements for " +
+                                  std::to_string(bands.size()) + " layer bands");
+    for (size_t k = 0; k < bands.size(); ++k)
+      band_imbalance(bands[k], band_z[k], interface_force, interface_force_bound, imbalance, magnitude);
+  }
   const int bodies = system.num_bodies();
-  std::vector<double> imbalance2(bodies, 0.0), load2(bodies, 0.0), contact2(bodies, 0.0), magnitude2(bodies, 0.0);
+  std::vector<double> imbalance2(bodies, 0.0), load2(bodies, 0.0), contact2(bodies, 0.0), magnitude2(bodies, 0.0),
+      nodal_magnitude2(bodies, 0.0);
   for (int i = 0; i < system.num_free(); ++i) {
     const int b = system.body_of(i);
     imbalance2[b] += imbalance[i] * imbalance[i];
     load2[b] += system.F()[i] * system.F()[i];
     contact2[b] += interface_force[i] * interface_force[i];
     magnitude2[b] += magnitude[i] * magnitude[i];
+    nodal_magnitude2[b] += nodal_magnitude[i] * nodal_magnitude[i];
   }
   constexpr double unit_roundoff = 0.5 * std::numeric_limits<double>::epsilon();
   for (int b = 0; b < bodies; ++b) {
     res.per_body.push_back(relative(imbalance2[b], std::max(load2[b], contact2[b])));
     res.per_body_floor.push_back(unit_roundoff * relative(magnitude2[b], std::max(load2[b], contact2[b])));
+    res.per_body_nodal_floor.push_back(unit_roundoff * relative(nodal_magnitude2[b], std::max(load2[b], contact2[b])));
     res.bulk = std::max(res.bulk, res.per_body.back());
   }
 

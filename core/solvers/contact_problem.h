@@ -70,15 +70,26 @@ struct Residual {
   std::vector<double> per_body;      // in the order of Model::bodies (LinearSystem::body_name)
   // The round-off floor of each body's residual: what evaluating K_b u_b − F_b − (Bᵀ r)_b in
   // double precision from these u and r can resolve, u_eps ‖|K_b||u_b| + |F_b| + |(Bᵀ r)_b|‖
-  // relative to the same scale (u_eps = 2⁻⁵³). A stiff layer whose film slid far holds its
-  // compression, 1e-9 mm, in the last digits of a displacement of 1e-2 mm: no answer stored in
-  // double has a smaller residual than this.
+  // relative to the same scale (u_eps = 2⁻⁵³); for a band given in its column basis, the same
+  // bound of that evaluation (|K_z||z| …, carried to nodal forces). In the nodal basis a stiff
+  // layer whose film moved far holds its compression, 1e-9 mm, in the last digits of a
+  // displacement of 1e-2 mm: no nodal answer stored in double has a smaller residual than this.
   std::vector<double> per_body_floor;
+  // The same bound for the nodal u alone (K_b u_b evaluated nodally, as a user re-evaluating the
+  // written `u` would): equal to per_body_floor except on a band given in its column basis.
+  std::vector<double> per_body_nodal_floor;
   double value() const { return std::max(interface, bulk); }
   double floor() const;              // the largest body floor
 };
+// band_z: the displacement of each layer band (LinearSystem::floating_bands, in order) in its
+// column basis z (core/fem/column_basis.h), when the solver has it (empty: nodal u only). A band's
+// imbalance is then evaluated where its digits are, K_z z − F_z − (column forces of Bᵀ r) mapped
+// back to nodal forces by the exact inverse map: the same K_b u_b − F_b − (Bᵀ r)_b in exact
+// arithmetic, without the round-off of a huge through-thickness stiffness times a film's
+// translation (the nodal evaluation's floor, 1e-9 for the dovetail's case f at ε = 1e-8), and
+// with the film's in-plane stiffness as accurate as its own size.
 Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& u_free,
-                          const Eigen::VectorXd& r);
+                          const Eigen::VectorXd& r, const std::vector<Eigen::VectorXd>& band_z = {});
 
 // Natural map of one node's law, given its forces r = (r_N, r_T) and d = (d_N, d_T).
 Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, const Eigen::Vector2d& d,

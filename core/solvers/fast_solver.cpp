@@ -102,7 +102,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   report.r = r;
   report.w = w;
   report.u = condensed.displacement(problem, r, w);
-  report.residual = contact_residual(problem, report.u, report.r);
+  report.residual = contact_residual(problem, report.u, report.r, condensed.band_coordinates(w));
   report.converged = report.residual.value() <= options.tolerance;
   // Capped at 1e300 so that it stays a number (an exactly singular system has rcond 0).
   // The worse of the two systems solved: the final active-set matrix and the bulk's CHOLMOD

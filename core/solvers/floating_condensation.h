@@ -47,6 +47,8 @@ class FloatingCondensation {
   Eigen::MatrixXd selection(LayerSelection face) const;
   // The body's free DOFs from x, written into u (free numbering).
   void displacement(const Eigen::VectorXd& x, Eigen::VectorXd& u) const;
+  // A layer band's x is its whole column basis z (core/fem/column_basis.h).
+  bool is_band() const { return is_band_; }
   // The interior factor's CHOLMOD reciprocal condition estimate (1 without interior).
   double rcond() const;
 

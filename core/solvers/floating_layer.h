@@ -12,7 +12,7 @@
 //      d = g̃ + W̃ r with W̃ = W + B_L (S + ρP)⁻¹ B_Lᵀ (core/solvers/layer_dual.h), and the
 //      statuses are found there by the active-set method warm started from the previous ρ; where
 //      it cycles, by the Tresca fixed point (core/solvers/tresca.h), which cannot;
-//   2. ρ = κ·10⁻¹⁰, 10⁻¹²: W̃ is too ill-conditioned to solve in (its film compliance 1/ρ hides
+//   2. ρ = κ·10⁻¹⁰, 10⁻¹², 10⁻¹⁴: W̃ is too ill-conditioned to solve in (its film compliance 1/ρ hides
 //      the adherents' by 12 orders), so the Newton steps solve the mixed (r, x) system instead,
 //      with the statuses still guessed on W̃'s scale (κ_row = 1/W̃_ii: decided by the forces on
 //      a film that the slightest force moves far, not by its jumps);

@@ -242,6 +242,12 @@ void print_report(const SolveReport& report, const SceneRecord& record) {
   say("  round-off floor per body:");
   for (size_t b = 0; b < record.residual_floor_per_body.size(); ++b)
     say(" %s %.1e", record.body_names[b].c_str(), record.residual_floor_per_body[b]);
+  // A layer band is evaluated in its column basis, where its digits are; the nodal u written
+  // out resolves its balance only to the nodal floor, shown where that is the larger.
+  for (size_t b = 0; b < record.residual_nodal_floor_per_body.size(); ++b)
+    if (record.residual_nodal_floor_per_body[b] > 10 * record.residual_floor_per_body[b])
+      say("; %s evaluated in its column basis (from the nodal u: %.1e)", record.body_names[b].c_str(),
+          record.residual_nodal_floor_per_body[b]);
   say("\n");
 }
 

@@ -31,14 +31,14 @@ void get(ByteReader& r, MeshQuality& q) {
 void put(ByteWriter& w, const SolveReport& s) {
   put(w, s.solver), put(w, s.u), put(w, s.r), put(w, s.w), put(w, s.iterations);
   put(w, s.residual.interface), put(w, s.residual.bulk), put(w, s.residual.per_interface), put(w, s.residual.per_body);
-  put(w, s.residual.per_body_floor);
+  put(w, s.residual.per_body_floor), put(w, s.residual.per_body_nodal_floor);
   put(w, s.tolerance), put(w, s.converged);
   put(w, s.stop_cause), put(w, s.condition_estimate), put(w, s.wall_time_s), put(w, s.message);
 }
 void get(ByteReader& r, SolveReport& s) {
   get(r, s.solver), get(r, s.u), get(r, s.r), get(r, s.w), get(r, s.iterations);
   get(r, s.residual.interface), get(r, s.residual.bulk), get(r, s.residual.per_interface), get(r, s.residual.per_body);
-  get(r, s.residual.per_body_floor);
+  get(r, s.residual.per_body_floor), get(r, s.residual.per_body_nodal_floor);
   get(r, s.tolerance), get(r, s.converged);
   get(r, s.stop_cause), get(r, s.condition_estimate), get(r, s.wall_time_s), get(r, s.message);
 }
@@ -56,14 +56,14 @@ void put(ByteWriter& w, const SceneRecord& s) {
   put(w, s.id), put(w, s.text), put(w, s.numbers), put(w, s.integers), put(w, s.nodes), put(w, s.cells);
   put(w, s.u), put(w, s.body_names), put(w, s.cell_body), put(w, s.cell_stress), put(w, s.interfaces);
   put(w, s.reactions), put(w, s.combined_status), put(w, s.residual_per_body), put(w, s.residual_per_interface);
-  put(w, s.residual_floor_per_body);
+  put(w, s.residual_floor_per_body), put(w, s.residual_nodal_floor_per_body);
   put(w, s.interface_names);
 }
 void get(ByteReader& r, SceneRecord& s) {
   get(r, s.id), get(r, s.text), get(r, s.numbers), get(r, s.integers), get(r, s.nodes), get(r, s.cells);
   get(r, s.u), get(r, s.body_names), get(r, s.cell_body), get(r, s.cell_stress), get(r, s.interfaces);
   get(r, s.reactions), get(r, s.combined_status), get(r, s.residual_per_body), get(r, s.residual_per_interface);
-  get(r, s.residual_floor_per_body);
+  get(r, s.residual_floor_per_body), get(r, s.residual_nodal_floor_per_body);
   get(r, s.interface_names);
 }
 
