@@ -210,33 +210,24 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
     for (const std::string& n : names) out += (out.empty() ? "" : ",") + n;
     return out;
   };
-  if (!scene.residual_per_body.empty()) {
-    file.dataset(g + "/residual_per_body", scene.residual_per_body);
-    with_unit(g + "/residual_per_body", "residual_per_body");
-    file.attr(g + "/residual_per_body", "bodies", joined(scene.body_names));
-  }
-  if (!scene.residual_floor_per_body.empty()) {
-    // What double precision can resolve of each body's residual for this answer (the residual
-    // cannot be expected below it): Residual::per_body_floor.
-    file.dataset(g + "/residual_floor_per_body", scene.residual_floor_per_body);
-    with_unit(g + "/residual_floor_per_body", "residual_floor_per_body");
-    file.attr(g + "/residual_floor_per_body", "bodies", joined(scene.body_names));
-    file.attr(g + "/residual_floor_per_body", "evaluation",
-              "a layer band's balance in its column basis (its digits kept), every other body nodally");
-  }
-  if (!scene.residual_nodal_floor_per_body.empty()) {
-    // A user re-evaluating K u from the written nodal `u` resolves a body's residual only to this.
-    file.dataset(g + "/residual_nodal_floor_per_body", scene.residual_nodal_floor_per_body);
-    with_unit(g + "/residual_nodal_floor_per_body", "residual_nodal_floor_per_body");
-    file.attr(g + "/residual_nodal_floor_per_body", "bodies", joined(scene.body_names));
-    file.attr(g + "/residual_nodal_floor_per_body", "evaluation",
-              "K_b u_b from the nodal u as written: what re-evaluating the file's u resolves");
-  }
-  if (!scene.residual_per_interface.empty()) {
-    file.dataset(g + "/residual_per_interface", scene.residual_per_interface);
-    with_unit(g + "/residual_per_interface", "residual_per_interface");
-    file.attr(g + "/residual_per_interface", "interfaces", joined(scene.interface_names));
-  }
+  // SPEC §1.5's residuals, one value per body or interface, named in `list_attr`.
+  auto residuals = [&](const std::string& name, const std::vector<double>& values, const char* list_attr,
+                       const std::vector<std::string>& names, const char* evaluation) {
+    if (values.empty()) return;
+    file.dataset(g + "/" + name, values);
+    with_unit(g + "/" + name, name);
+    file.attr(g + "/" + name, list_attr, joined(names));
+    if (evaluation) file.attr(g + "/" + name, "evaluation", evaluation);
+  };
+  residuals("residual_per_body", scene.residual_per_body, "bodies", scene.body_names, nullptr);
+  // What double precision can resolve of each body's residual for this answer (the residual
+  // cannot be expected below it): Residual::per_body_floor.
+  residuals("residual_floor_per_body", scene.residual_floor_per_body, "bodies", scene.body_names,
+            "a layer band's balance in its column basis (its digits kept), every other body nodally");
+  // A user re-evaluating K u from the written nodal `u` resolves a body's residual only to this.
+  residuals("residual_nodal_floor_per_body", scene.residual_nodal_floor_per_body, "bodies", scene.body_names,
+            "K_b u_b from the nodal u as written: what re-evaluating the file's u resolves");
+  residuals("residual_per_interface", scene.residual_per_interface, "interfaces", scene.interface_names, nullptr);
 }
 
 }  // namespace thinlayer

@@ -174,6 +174,11 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
   std::vector<Active> settled_statuses = statuses;
   Eigen::VectorXd settled_r = r, settled_x = x;
   int settled_in_a_row = 0;
+  // Not converged, not capped, and the last proximal steps each re-settled the same statuses: the
+  // layer is being followed along a push, not searched for.
+  auto left_adrift = [&] {
+    return !(run.residual <= options.tolerance) && settled_in_a_row >= 5 && !budget.spent(run);
+  };
   // Stages 2 and 3 run once with the springs of mixed_stages and, where the layer is left adrift
   // after them (a film softer than the last spring, which the proximal steps follow at a rate
   // 1 − k_film/ρ), once more from the same settled state with one weaker spring, adrift_stage.
@@ -251,8 +256,7 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
         if (fraction < 1e-3) break;
       }
     }
-    const bool adrift = !(run.residual <= options.tolerance) && settled_in_a_row >= 5 && !budget.spent(run);
-    if (!adrift || round == 1) break;
+    if (!left_adrift() || round == 1) break;
     settled_statuses = staged_statuses;
     settled_r = staged_r;
     settled_x = staged_x;
@@ -260,7 +264,7 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
     targets = {adrift_stage};
   }
   run.capped = budget.spent(run);
-  run.adrift = !(run.residual <= options.tolerance) && settled_in_a_row >= 5 && !run.capped;
+  run.adrift = left_adrift();
   if (!(run.residual <= options.tolerance) || floating_bodies_free(c, run.statuses)) {
     // Not converged, or the layer touches nothing: report the conditioning of the true
     // (spring-free) problem with these statuses, which says whether the layer was left free.
