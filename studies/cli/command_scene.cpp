@@ -15,6 +15,8 @@
 #include "studies/parallel/process_group.h"
 #include "studies/cli/results_file.h"
 #include "studies/drivers/scene_file_study.h"
+#include "studies/drivers/scene_solve_output.h"
+#include "studies/cli/scene_report.h"
 
 namespace thinlayer {
 
@@ -36,12 +38,9 @@ SceneSolveInput parse_solve(const std::vector<std::string>& argv) {
   if (in.scene.empty()) throw std::invalid_argument("--scene needs a file");
   in.mode = args.text("mode", "limit");
   if (in.mode != "limit" && in.mode != "layer") throw std::invalid_argument("unknown mode '" + in.mode + "' (expected limit or layer)");
-  if (in.mode == "layer") {
-    if (!args.has("eps")) throw std::invalid_argument("layer mode needs --eps");
+  if (args.has("eps")) {  // without it, an engineer's glue's own thickness (checked with the scene)
     in.eps = args.number("eps", 0);
     if (!(in.eps > 0) || std::isinf(in.eps)) throw std::invalid_argument("--eps must be finite and > 0");
-  } else if (args.has("eps")) {
-    throw std::invalid_argument("--eps applies to the layer mode only");
   }
   in.solver = parse_solver(args.text("solver", "fast"));
   in.options = parse_solver_options(args);
@@ -55,74 +54,9 @@ SceneSolveInput parse_solve(const std::vector<std::string>& argv) {
   return in;
 }
 
-nlohmann::json counts_json(const StatusCount& c) { return {{"gap", c.gap}, {"slide", c.slide}, {"stick", c.stick}}; }
-
-std::string summary_line(const SceneSolveInput& in, const SceneRecord& record, const SolveReport& report) {
-  nlohmann::json counts;
-  for (const InterfaceFields& f : record.interfaces) counts[f.name] = counts_json(f.counts());
-  if (!record.combined_status.empty()) {
-    std::vector<NodeStatus> combined;
-    for (int v : record.combined_status) combined.push_back(static_cast<NodeStatus>(v));
-    counts["combined"] = counts_json(count_statuses(combined));
-  }
-  const nlohmann::json j = {
-      {"scene", record.id},
-      {"case", record.text.at("case")},
-      {"scene_file", in.scene},
-      {"mode", in.mode},
-      {"law_case", record.text.at("law_case")},
-      {"solver", report.solver},
-      {"converged", report.converged},
-      {"stop_cause", to_string(report.stop_cause)},
-      {"iterations", report.iterations},
-      {"residual", {{"value", report.residual.value()}, {"interface", report.residual.interface},
-                    {"bulk", report.residual.bulk}, {"tolerance", report.tolerance}}},
-      {"counts", counts},
-      {"times_s", {{"solve", report.wall_time_s}, {"setup", record.numbers.at("setup_time_s")},
-                   {"meshing", record.numbers.at("meshing_time_s")}}},
-      {"out", in.out.empty() ? nullptr : nlohmann::json(in.out)},
-      {"vtu", in.vtu.empty() ? nullptr : nlohmann::json(in.vtu)},
-  };
-  return j.dump();
-}
-
-void print_counts(const char* what, const StatusCount& c) {
-  std::printf("  %-9s gap %3d  slide %3d  stick %3d\n", what, c.gap, c.slide, c.stick);
-}
-
-void print_scene(const SceneFileBulk& bulk, const SceneSolveInput& in, const SceneFileScene& s) {
-  const SceneSpec& spec = bulk.spec();
-  const InterfaceLaw law = spec.limit_law();
-  std::printf("scene %s (%s), %s mode%s; limit law: Table 1 case %c (lambda_bar %g, mu_bar %g daN/mm^3, f %g)\n",
-              spec.name.c_str(), spec.file.c_str(), in.mode.c_str(), in.mode == "layer" ? (" at eps " + plain(in.eps) + " mm").c_str() : "",
-              law.table1_case(), law.lambda_bar, law.mu_bar, law.friction);
-  std::printf("  meshes:");
-  for (std::size_t b = 0; b < spec.bodies.size(); ++b)
-    std::printf(" %s %d nodes%s", spec.bodies[b].name.c_str(), bulk.meshes().bodies[b].num_nodes(),
-                bulk.model().bodies[b].floating ? " (held by contact alone)" : "");
-  std::printf("; %zu nodes on S; meshed in %.3f s\n", bulk.interface_nodes().plus.size(), bulk.meshes().meshing_time_s);
-  if (in.mode == "limit") {
-    print_counts("S", s.limit);
-  } else {
-    const MeshQuality& q = s.layer_quality;
-    std::printf("  layer: %d Q1 cells, angles %.1f..%.1f deg, aspect ratio up to %.3g\n", q.cells, q.min_angle_deg,
-                q.max_angle_deg, q.max_aspect_ratio);
-    print_counts("S+", s.counts.plus_face);
-    print_counts("S-", s.counts.minus_face);
-    print_counts("combined", s.counts.combined);
-  }
-  const SolveReport& r = s.report;
-  const std::string outcome = r.converged ? "converged" : std::string("NOT converged (") + to_string(r.stop_cause) + ")";
-  std::printf("  %s after %d iterations; residual %.3e (interface %.3e, bulk %.3e), tolerance %.0e\n", outcome.c_str(),
-              r.iterations, r.residual.value(), r.residual.interface, r.residual.bulk, r.tolerance);
-  std::printf("  time: solve %.4f s, setup %.4f s\n  reactions (daN/mm):", r.wall_time_s, s.record.numbers.at("setup_time_s"));
-  for (const auto& [name, R] : s.record.reactions) std::printf(" %s (%.6g, %.6g)", name.c_str(), R.x(), R.y());
-  std::printf("\n");
-}
-
-void write_results(const std::string& path, const SceneRecord& record) {
+void write_results(const std::string& path, const SceneFileScene& scene, const SceneFileBulk& bulk) {
   auto out = open_results_file(path);
-  write_scene(*out, record);
+  write_scene_file_scene(*out, scene, bulk);
   write_checks(*out, {});
   out->commit();
 }
@@ -149,7 +83,7 @@ int command_solve_scene(const std::vector<std::string>& argv) {
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
     bulk = std::make_unique<SceneFileBulk>(read_scene_spec(in.scene));
-    if (in.mode == "layer") check_layer_mode(*bulk, in.eps);
+    check_scene_eps(*bulk, in.mode, in.eps);
   } catch (const std::invalid_argument& e) {
     return fail("solve", e, 2);
   } catch (const OutputError& e) {
@@ -158,14 +92,15 @@ int command_solve_scene(const std::vector<std::string>& argv) {
     return fail("solve", e, 2);
   }
   try {
-    const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options)
+    const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options, in.eps)
                                                 : solve_scene_file_layer(*bulk, in.eps, in.solver, in.options);
-    if (!in.json) print_scene(*bulk, in, s);
-    if (!in.out.empty()) write_results(in.out, s.record);
+    if (!in.json) print_scene_solve(*bulk, in.mode, in.eps, s);
+    if (!in.out.empty()) write_results(in.out, s, *bulk);
     if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
-    if (in.json) std::printf("%s\n", summary_line(in, s.record, s.report).c_str());
+    if (in.json) std::printf("%s\n", scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu).c_str());
+    if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!s.report.converged) {
       std::cerr << "thinlayer solve: " << s.report.message << "\n";
       return 1;
@@ -213,7 +148,7 @@ int command_study_scene(const std::string& study, const std::vector<std::string>
     if (!spec.has_layer())
       throw std::invalid_argument("scene '" + spec.name + "' gives a limit law only ('law'): it has no layer mode to study");
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
-    for (double e : bulk->spec().eps.empty() ? options.eps : bulk->spec().eps) check_layer_mode(*bulk, e);
+    for (double e : scene_study_grid(*bulk, options)) check_layer_mode(*bulk, e);
   } catch (const std::exception& e) {
     return fail("study", e, 2);
   }
@@ -232,6 +167,7 @@ int command_study_scene(const std::string& study, const std::vector<std::string>
       write_checks(*out, r.checks);
       out->commit();
       std::printf("wrote %s\n", out->path().c_str());
+      report_scene_study(out_dir, options.verbose);  // DIR/report/index.html: the joint drawn
     }
     return failed == 0 ? 0 : 1;
   } catch (const std::invalid_argument& e) {
