@@ -76,8 +76,8 @@ InterfaceLaw Glue::limit_law(double eps, const AdherentData& reference, const La
     const InterfaceLaw chosen = classify_layer({eps, m.lambda, m.mu}, reference, friction);  // SPEC §1.3
     return layer_limit_law(chosen.lambda_bar, chosen.mu_bar, faces, friction);
   }
-  // lim ε^(p−1) g as ε → 0: ∞ below p = 1, g at 1, 0 above (paper §3.1.8, Table 1).
-  auto limit_ratio = [](double p, double g) { return p < 1 ? inf : p > 1 ? 0.0 : g; };
+  // lim ε^(p−1) g as ε → 0: ∞ below p = 1, g at 1, 0 above (paper §3.1.8, Table 1); 0 for g = 0.
+  auto limit_ratio = [](double p, double g) { return g == 0 ? 0.0 : p < 1 ? inf : p > 1 ? 0.0 : g; };
   return layer_limit_law(limit_ratio(gamma_, lambda_g_), limit_ratio(delta_, mu_g_), faces, friction);
 }
 

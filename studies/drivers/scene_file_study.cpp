@@ -223,6 +223,17 @@ void run_floor(const SceneFileBulk& bulk, double eps, const SceneStudyOptions& o
   }
 }
 
+// The thickness of the mesh-floor study: for the paper's family far below the grid (the floor
+// proper: its ε part vanishes); for an engineer's glue its own thickness, the joint as glued (the
+// floor of a glue that stiffens as it thins says nothing of it: at t → 0 both modes are rigid
+// and the shear-lag zone that the mesh must resolve, of width ~ √(E_a t_a t / G_g), is gone).
+double floor_thickness(const SceneFileBulk& bulk, const std::vector<double>& eps, const SceneStudyOptions& options) {
+  double t = 0;
+  for (const SceneInterfaceSpec& i : bulk.spec().interfaces)
+    if (i.glue) t = std::max(t, i.glue->thickness);
+  return t > 0 ? std::min(t, bulk.thickest_layer()) : eps.back() * options.floor_eps_factor;
+}
+
 void add_checks(const SceneSpec& spec, const SceneStudyOptions& options, SceneStudyResult& r) {
   const std::string id = "scene." + spec.name;
   r.checks.push_back({id + ".limit_converged", r.limit_converged, "limit-mode residual <= " + sci(options.tolerance, 0),
@@ -258,7 +269,7 @@ std::vector<double> scene_study_grid(const SceneFileBulk& bulk, const SceneStudy
     double t = 0;
     for (const SceneInterfaceSpec& i : spec.interfaces)
       if (i.glue) t = std::max(t, i.glue->thickness);
-    for (double factor : {2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01})
+    for (double factor : {5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01})
       if (factor * t <= bulk.thickest_layer()) eps.push_back(factor * t);
   }
   if (eps.empty()) eps = options.eps;
@@ -312,7 +323,7 @@ SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& o
 
   print_scene_study(bulk, r, options);
   std::vector<FloorScenes> floor_scenes;
-  run_floor(bulk, eps.back() * options.floor_eps_factor, options, r, floor_scenes);
+  run_floor(bulk, floor_thickness(bulk, eps, options), options, r, floor_scenes);
   print_scene_floor(r);
 
   std::vector<SceneFileScene> extra;

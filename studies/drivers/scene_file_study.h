@@ -10,7 +10,7 @@
 // limit law for every ε; the predicted rate of its (γ, δ) (studies/convergence_rates.md) is
 // checked. An engineer's glue ("glue": fixed E, ν): the same glue at each thickness t of the
 // grid, and the limit law SPEC §1.3 chooses at that t, so one limit scene per thickness; its
-// default grid is its own thickness times 2, 1, 1/2, 1/5, ... 1/100 (those the joint can hold).
+// default grid is its own thickness times 5, 2, 1, 1/2, 1/5, ... 1/100 (those the joint can hold).
 // The distances: studies/tools/scene_distance.h.
 #include <map>
 #include <optional>
@@ -35,8 +35,9 @@ struct SceneStudyOptions {
   bool validity = false;      // also S3
   double rate_tolerance = 0.15;  // |p_fit − p_predicted| allowed, as the dovetail's S2 check
   // The mesh floor: the modes' distance at the thinnest ε of the grid times floor_eps_factor
-  // (its ε part far below the floor), at h, h/2, h/4 ... along the bondlines (floor_levels of
-  // them; a scene given as "geometry" with "mesh_size" only; fewer than 2: none).
+  // (its ε part far below the floor; an engineer's glue: at its own thickness, the joint as
+  // glued), at h, h/2, h/4 ... along the bondlines (floor_levels of them; a scene given as
+  // "geometry" with "mesh_size" only; fewer than 2: none).
   int floor_levels = 3;
   double floor_eps_factor = 1e-2;
 };
@@ -104,7 +105,7 @@ struct SceneStudyResult {
 SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& options, H5Writer* out);
 
 // The thicknesses the study samples (mm, decreasing): the scene's "eps", or for the paper's
-// family options.eps, for an engineer's glue its own thickness times 2, 1, 1/2, 1/5, ..., 1/100
+// family options.eps, for an engineer's glue its own thickness times 5, 2, 1, 1/2, 1/5, ..., 1/100
 // (those the joint can hold).
 std::vector<double> scene_study_grid(const SceneFileBulk& bulk, const SceneStudyOptions& options);
 

@@ -87,9 +87,9 @@ void print_scene_study(const SceneFileBulk& bulk, const SceneStudyResult& r, con
 
 void print_scene_floor(const SceneStudyResult& r) {
   if (r.floor.empty()) return;
-  std::printf("\nMesh floor: the modes' distance at eps %g mm (its eps part far below), the scene re-meshed with\n"
-              "the element size h along the bondlines halved (and far from them)\n",
-              r.floor.front().eps);
+  std::printf("\nMesh floor: the modes' distance at eps %g mm (%s), the scene re-meshed\n"
+              "with the element size h along the bondlines halved (and far from them)\n",
+              r.floor.front().eps, r.family == "engineer" ? "the glue's own thickness" : "its eps part far below");
   std::printf("  %-8s %6s", "h (mm)", "nodes");
   for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", q.c_str());
   std::printf("\n");
@@ -112,7 +112,12 @@ void print_scene_validity(const SceneStudyResult& r, int steps) {
     std::printf("%-5g | %-11s %-10s %-11s %-11s%s\n", v.tau, verdict_text(v).c_str(), sci(v.error_at_eps_max, 2).c_str(),
                 v.status == "found" ? sci(v.eps_beyond, 2).c_str() : "-", v.status.c_str(),
                 v.converged ? "" : "  (a scene did not converge)");
-  if (!r.floor.empty())
+  if (!r.floor.empty() && r.family == "engineer")
+    std::printf("On the mesh: the distance u at the glue's own thickness %g mm is %s at h %g mm and %s at h %g mm:\n"
+                "a verdict changes with the mesh where tau is within that change\n",
+                r.floor.front().eps, sci(r.floor.front().e.at("u"), 2).c_str(), r.floor.front().h,
+                sci(r.floor.back().e.at("u"), 2).c_str(), r.floor.back().h);
+  else if (!r.floor.empty())
     std::printf("The mesh floor of u on this mesh (h %g mm): %s; a tau below it cannot be resolved here (refine\n"
                 "mesh_size.interface; at h %g mm it is %s)\n",
                 r.floor.front().h, sci(r.floor.front().e.at("u"), 2).c_str(), r.floor.back().h,
@@ -220,7 +225,9 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
       limit_ids_f.push_back(row.limit_id);
     }
     put(out, f + "/h", h, "mm", "the element size along the bondlines (mesh_size.interface; far halved alike)");
-    put(out, f + "/eps", feps, "mm", "the layer's thickness: the thinnest sample times floor_eps_factor");
+    put(out, f + "/eps", feps, "mm",
+        r.family == "engineer" ? "the layer's thickness: the glue's own (the joint as glued)"
+                               : "the layer's thickness: the thinnest sample times floor_eps_factor");
     put(out, f + "/S_nodes", nodes, "", "nodes on every bondline together");
     put(out, f + "/converged", fconv, "", "1: both scenes reached the tolerance");
     put(out, f + "/layer_scene", layer_ids, "", "the layer scene at h (/scenes/<id>)");
