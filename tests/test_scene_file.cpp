@@ -17,6 +17,7 @@
 #include "cases/scene/scene_spec.h"
 #include "cases/scene/scene_file_scenes.h"
 #include "core/mesh/gmsh_session.h"
+#include "tests/scene_folder.h"
 
 namespace fs = std::filesystem;
 using namespace thinlayer;
@@ -41,26 +42,8 @@ std::string spec_error(const std::string& text) {
   return "(no error)";
 }
 
-// A temporary folder removed at the end of the test.
-struct Folder {
-  fs::path path;
-  Folder() {
-    path = fs::temp_directory_path() / ("thinlayer-scene-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(path);
-  }
-  ~Folder() { fs::remove_all(path); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return (path / name).string();
-  }
-};
-
-std::string num(double x) {
-  char s[40];
-  std::snprintf(s, sizeof s, "%.17g", x);
-  return s;
-}
+using Folder = SceneFolder;
+std::string num(double x) { return full_digits(x); }
 
 // The closed form's data. Plane strain, mm and daN.
 struct ClosedForm {

@@ -84,6 +84,45 @@ def refused(name, args, expect_in_message, folder):
     check(name + " nothing written", snapshot(folder) == before, "the folder changed")
 
 
+def done_when(folder):
+    """Issue 27's "Done when", as a new user runs it: the shipped double lap (0.2 mm of epoxy,
+    E = 3000 MPa, nu = 0.35, between aluminium strips, in N and MPa, bonded) in one
+    `study validity --scene`: both modes, the verdict, a report showing the bondline shear and peel
+    stresses, and the bondline fields as CSV."""
+    lap = os.path.join(os.path.dirname(LAP), "double_lap")
+    for name in ("double_lap.json", "double_lap.geo"):
+        shutil.copy(os.path.join(lap, name), os.path.join(folder, name))
+    r = subprocess.run([THINLAYER, "study", "validity", "--scene", "double_lap.json", "--out", "dl", "--quiet"], cwd=folder,
+                       capture_output=True, text=True)
+    check("double lap: study exit 0", r.returncode == 0, r.stdout[-2000:] + r.stderr)
+    check("double lap: the verdict printed", "Thickness validity" in r.stdout and "0.01" in r.stdout, r.stdout[-2000:])
+    results = os.path.join(folder, "dl", "results.h5")
+    if not os.path.exists(results):
+        check("double lap: results.h5", False, "missing")
+        return
+    with h5py.File(results) as h:
+        g = h["studies"]["scene"]["double-lap"]
+        check("double lap: an engineer's glue", g.attrs["family"] == "engineer", str(dict(g.attrs)))
+        check("double lap: both modes", {h["scenes"][s].attrs["mode"] for s in h["scenes"]} == {"limit", "layer"}, "")
+        check("double lap: validity", set(g["validity"]["status"].asstr()[()]) <= {"found", "at_least", "below_range"}, "")
+        described = all("description" in g[d].attrs for d in ("eps", "e_u", "validity/eps_max", "peaks/shear"))
+        check("double lap: study datasets described", described and g["eps"].attrs["units"] == "mm" and
+              g["peaks"]["shear"].attrs["units"] == "MPa", "")
+        limit = h["scenes"][g["limit_scene"].asstr()[0]]
+        check("double lap: loads and supports stored", "supports" in limit and set(limit["supports"]) == {"clamp", "grip"}, "")
+        check("double lap: in MPa", limit["interface"]["bond_top"]["S"]["sigma_T"].attrs["units"] == "MPa", "")
+    with open(os.path.join(folder, "dl", "report", "index.html"), encoding="utf-8") as f:
+        page = f.read()
+    check("double lap: the joint's report", "<title>thinlayer joint report: double-lap</title>" in page and
+          "shear stresses" in page and "peel" in page and "not in this results file" not in page, page[:300])
+    for name in ("joint_double-lap_bondline_bond_top.png", "joint_double-lap_peaks.png", "joint_double-lap_shape.png"):
+        check("double lap: figure " + name, os.path.exists(os.path.join(folder, "dl", "report", "figures", name)), name)
+    with open(os.path.join(folder, "dl", "bondline_fields.csv"), encoding="utf-8") as f:
+        rows = [line for line in f if not line.startswith("#")]
+    check("double lap: bondline fields as CSV", rows[0].startswith("scene,mode,eps,h,bondline,node,s,") and len(rows) > 100,
+          rows[0] if rows else "empty")
+
+
 def main():
     folder = tempfile.mkdtemp(prefix="thinlayer-scene-")
     try:
@@ -148,6 +187,66 @@ def main():
         refused("study: scene on a study without", ["study", "table3", "--scene", "good.json", "--out", "study"],
                 "--scene applies to study convergence and study validity only", folder)
 
+        # The engineer's joint keys (issue 27): each bad value refused at its line.
+        s = scene()
+        s["interface"]["faces"] = {"plus": "glued"}
+        write("faces.json", s)
+        refused("bad face", ["solve", "--scene", "faces.json", *outs], "'plus' in faces must be \"bonded\" or \"contact\"", folder)
+        s = scene()
+        s["interface"]["glue"] = {"E": 3000, "nu": 0.35, "thickness": 0.2}
+        write("twoglues.json", s)
+        refused("layer and glue", ["solve", "--scene", "twoglues.json", *outs], "needs exactly one of 'layer', 'glue' and 'law'",
+                folder)
+        s = scene()
+        del s["interface"]["layer"]
+        s["interface"]["glue"] = {"E": 3000, "nu": 0.35}
+        write("nothick.json", s)
+        refused("glue without thickness", ["solve", "--scene", "nothick.json", *outs], "glue has no 'thickness'", folder)
+        s = scene()
+        s["loads"] = [{"group": "top", "traction": [0, 1], "pressure": 2}]
+        write("twoloads.json", s)
+        refused("two kinds of load", ["solve", "--scene", "twoloads.json", *outs], "needs exactly one of 'traction'", folder)
+        write("kN.json", scene(units="mm-kN"))
+        refused("unknown units", ["solve", "--scene", "kN.json", *outs], "'units' must be \"mm-daN\" (the default) or \"mm-N\"",
+                folder)
+        s = scene()
+        s["interfaces"] = [dict(s["interface"]), dict(s["interface"])]
+        del s["interface"]
+        write("twice.json", s)
+        refused("bondline listed twice", ["solve", "--scene", "twice.json", *outs], "bondline group 'bond' is listed twice", folder)
+        s = scene()
+        s["interfaces"] = [s["interface"]]
+        write("both.json", s)
+        refused("interface and interfaces", ["solve", "--scene", "both.json", *outs],
+                "exactly one of 'interface' (one bondline) and 'interfaces'", folder)
+        s = scene()
+        s["bodies"]["a"]["E"] = 7000
+        write("lame_and_young.json", s)
+        refused("lambda and E", ["solve", "--scene", "lame_and_young.json", *outs], "needs either 'lambda' and 'mu' or 'E' and 'nu'",
+                folder)
+        refused("layer mode without a thickness", ["solve", "--scene", "good.json", "--mode", "layer", *outs],
+                "layer mode needs --eps", folder)
+        refused("eps in limit mode of the paper's family", ["solve", "--scene", "good.json", "--eps", "0.01", *outs],
+                "--eps applies to the layer mode only", folder)
+
+        # The same joint pulled apart with its faces in contact (the paper's): nothing holds it
+        # across the bondline, and the solve says so.
+        s = scene()
+        s["supports"] = [{"group": "bottom", "u": [0, 0]}, {"group": "top", "u": [0, 0.001]}]
+        write("apart.json", s)
+        r = subprocess.run([THINLAYER, "solve", "--scene", "apart.json", "--json"], cwd=folder, capture_output=True, text=True)
+        check("no load: said", r.returncode == 0 and "carries no load" in r.stderr and
+              json.loads(r.stdout)["carries_load"] is False, r.stdout + r.stderr)
+        s["interface"]["faces"] = {"plus": "bonded", "minus": "bonded"}
+        write("bonded.json", s)
+        r = subprocess.run([THINLAYER, "solve", "--scene", "bonded.json", "--json"], cwd=folder, capture_output=True, text=True)
+        if r.returncode == 0:
+            j = json.loads(r.stdout)
+            check("bonded: carries the tension", j["carries_load"] and j["reactions"]["top"][1] > 0, r.stdout)
+            check("bonded: reactions in --json balance", abs(j["reactions"]["top"][1] + j["reactions"]["bottom"][1]) < 1e-9, r.stdout)
+        else:
+            check("bonded solve", False, r.stderr)
+
         # A support on a physical point: the bottom on rollers, the corner pinned.
         s = scene()
         s["supports"] = [{"group": "bottom", "u": [None, 0]}, {"group": "corner", "u": [0, 0]},
@@ -182,6 +281,7 @@ def main():
             j = json.loads(r.stdout)
             check("lap joint layer converged", j["converged"], r.stdout)
             check("lap joint layer faces", set(j["counts"]) == {"S+", "S-", "combined"}, r.stdout)
+        done_when(folder)
     finally:
         shutil.rmtree(folder)
     print(f"{passed} checks passed, {len(failures)} failed")

@@ -17,6 +17,13 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
+// Why a plus body's cells cannot follow the offset of its bondline.
+constexpr const char* kCannotFollow =
+    "its cells there cannot follow the offset: the body is too thin there, or the bondline has a corner (each side's "
+    "nodal normal moves by eps, so an acute corner limits eps to about half the element size), or a free face must "
+    "step by eps where the bondline ends; a plus body that can move away as a whole (the outer strips of a lap) holds "
+    "any layer";
+
 [[noreturn]] void fail_at(const std::string& where, const std::string& what) { throw InputError(where + ": " + what); }
 
 // Nodes "at the same position" across the interface: round-off of coordinates of the model's
@@ -319,7 +326,7 @@ ThickestLayer scene_thickest_layer(const SceneSpec& spec, const SceneMeshes& mes
   if (morph.inversion_scale / 2 < out.eps) {
     out.eps = morph.inversion_scale / 2;
     out.reason = "half the thickness, " + mm(morph.inversion_scale) + " mm, at which making room for the layer would invert a cell of body '" +
-                 morph.inverting_body + "' near " + point_text(morph.inverting_cell_centre) + " (the body is too thin there)";
+                 morph.inverting_body + "' near " + point_text(morph.inverting_cell_centre) + " (" + kCannotFollow + ")";
   }
   return out;
 }
@@ -346,7 +353,7 @@ SceneLayerModel make_scene_layer_model(const SceneSpec& spec, const SceneMeshes&
     std::ostringstream s;
     s << "the layer is too thick for this joint: making room for it would invert a cell of body '" << morph.inverting_body
       << "' near " << point_text(morph.inverting_cell_centre) << " at " << morph.inversion_scale
-      << " times its thickness; at most " << morph.inversion_scale / 2 << " times it (the body is too thin there)";
+      << " times its thickness; at most " << morph.inversion_scale / 2 << " times it (" << kCannotFollow << ")";
     throw std::invalid_argument(s.str());
   }
 

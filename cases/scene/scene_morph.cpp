@@ -4,7 +4,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/fem/linear_system.h"
+#include "core/fem/element_p1.h"
+#include "core/fem/element_q1.h"
+#include "core/fem/material.h"
 #include "core/linalg/sparse_cholesky.h"
 
 namespace thinlayer {
@@ -29,19 +31,84 @@ double first_positive_root(double c0, double c1, double c2) {
   return best;
 }
 
-// The elastic extension of one body's offsets: the displacement of every node (mm).
+// Stiffening exponent χ of the extension: each cell's modulus is (A_mean / A_cell)^χ, so that the
+// small cells (along the bondline, and at its ends, where the offset meets a free boundary and the
+// extension's gradient is singular) move almost rigidly and the large ones absorb the strain
+// (Jacobian-based stiffening, Tezduyar et al. 1992).
+constexpr double kStiffening = 1.0;
+
+template <std::size_t N>
+double cell_area(const Mesh& mesh, const std::array<int, N>& cell) {
+  double a = 0;
+  for (std::size_t k = 0; k < N; ++k) {
+    const int i = cell[k], j = cell[(k + 1) % N];
+    a += 0.5 * (mesh.nodes(i, 0) * mesh.nodes(j, 1) - mesh.nodes(j, 0) * mesh.nodes(i, 1));
+  }
+  return a;
+}
+
+// The stiffness of the extension on every node's two DOFs (plane strain, λ = μ = 1 scaled per cell).
+Eigen::SparseMatrix<double> extension_stiffness(const Mesh& mesh) {
+  const Eigen::Matrix3d D = Material{1.0, 1.0, PlaneHypothesis::Strain}.D();
+  double mean = 0;
+  for (const auto& q : mesh.quads) mean += cell_area(mesh, q);
+  for (const auto& t : mesh.triangles) mean += cell_area(mesh, t);
+  mean /= std::max(1, mesh.num_cells());
+  std::vector<Eigen::Triplet<double>> triplets;
+  auto add = [&](const auto& cell, const auto& Ke) {
+    const double scale = std::pow(mean / cell_area(mesh, cell), kStiffening);
+    for (std::size_t a = 0; a < cell.size(); ++a)
+      for (int ca = 0; ca < 2; ++ca)
+        for (std::size_t b = 0; b < cell.size(); ++b)
+          for (int cb = 0; cb < 2; ++cb)
+            triplets.emplace_back(2 * cell[a] + ca, 2 * cell[b] + cb, scale * Ke(2 * a + ca, 2 * b + cb));
+  };
+  for (const auto& q : mesh.quads) {
+    Coords4 xy;
+    for (int a = 0; a < 4; ++a) xy.row(a) = mesh.nodes.row(q[a]);
+    add(q, q1_stiffness(xy, D));
+  }
+  for (const auto& t : mesh.triangles) {
+    Coords3 xy;
+    for (int a = 0; a < 3; ++a) xy.row(a) = mesh.nodes.row(t[a]);
+    add(t, p1_stiffness(xy, D));
+  }
+  Eigen::SparseMatrix<double> K(2 * mesh.num_nodes(), 2 * mesh.num_nodes());
+  K.setFromTriplets(triplets.begin(), triplets.end());
+  return K;
+}
+
+// The extension of one body's offsets: the displacement of every node (mm).
 Eigen::MatrixX2d extend(const Mesh& mesh, const std::string& name, const NodeOffsets& offsets) {
   if (offsets.size() < 2)
     throw std::invalid_argument("moving body '" + name + "' for the layer needs at least two bondline nodes");
-  Model model;
-  // ν = 0.25 (λ = μ): the shape of the extension, not any real material's answer.
-  model.bodies.push_back({name, mesh, Material{1.0, 1.0, PlaneHypothesis::Strain}});
-  for (const auto& [node, d] : offsets)
-    for (int c = 0; c < 2; ++c) model.dirichlet.push_back({"offset", 0, {node}, c, d[c]});
-  const LinearSystem system(model);
-  Eigen::VectorXd u_free;
-  if (system.num_free() > 0) u_free = SparseCholesky(system.K()).solve(system.F());
-  const Eigen::VectorXd u = system.expand(u_free);
+  const int n = 2 * mesh.num_nodes();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
+  std::vector<int> free_index(n, 0);
+  for (const auto& [node, d] : offsets) {
+    u.segment<2>(2 * node) = d;
+    free_index[2 * node] = free_index[2 * node + 1] = -1;
+  }
+  int free = 0;
+  for (int& i : free_index)
+    if (i == 0) i = free++;
+  // K_ff u_f = −K_fd u_d.
+  const Eigen::SparseMatrix<double> K = extension_stiffness(mesh);
+  std::vector<Eigen::Triplet<double>> ff;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(free);
+  for (int col = 0; col < K.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, col); it; ++it) {
+      const int i = free_index[it.row()], j = free_index[it.col()];
+      if (i >= 0 && j >= 0) ff.emplace_back(i, j, it.value());
+      else if (i >= 0) rhs[i] -= it.value() * u[it.col()];
+    }
+  if (free > 0) {
+    Eigen::SparseMatrix<double> K_ff(free, free);
+    K_ff.setFromTriplets(ff.begin(), ff.end());
+    const Eigen::VectorXd u_f = SparseCholesky(K_ff).solve(rhs);
+    for (int dof = 0; dof < n; ++dof)
+      if (free_index[dof] >= 0) u[dof] = u_f[free_index[dof]];
+  }
   Eigen::MatrixX2d out(mesh.num_nodes(), 2);
   for (int i = 0; i < mesh.num_nodes(); ++i) out.row(i) << u[2 * i], u[2 * i + 1];
   return out;

@@ -250,12 +250,17 @@ void add_checks(const SceneSpec& spec, const SceneStudyOptions& options, SceneSt
                       sci(r.samples.front().e.at("u"), 2) + " at eps " + plain(r.samples.front().eps) + " ... " +
                           sci(r.samples.back().e.at("u"), 2) + " at eps " + plain(r.samples.back().eps),
                       "0"});
-  // As the dovetail's S2 check: the floored rate of u against the asymptotics' prediction for
-  // the scene's (γ, δ), where the prediction exists (studies/convergence_rates.md).
+  // As the dovetail's S2 check: the rate of u from the layer model's Cauchy differences (SPEC §3
+  // S2 item 1: the mesh floor cancels) against the asymptotics' prediction for the scene's (γ, δ),
+  // where the prediction exists (studies/convergence_rates.md). (Until issue 27 the floored fit
+  // e ≈ e_∞ + C ε^p was checked; where the floor is 1e4 times the ε part, as on the dovetail's
+  // grid below 1e-3, that fit cannot resolve p: 1.21-1.26 on the bonded-law scenes whose Cauchy
+  // rate is 1.00 ± 0.00. It is still printed and stored.)
   if (r.p_predicted) {
-    const auto& f = r.floor_fit.at("u");
+    const auto& f = r.cauchy_fit.at("u");
     const bool pass = f && std::abs(f->p - *r.p_predicted) <= options.rate_tolerance;
-    r.checks.push_back({id + ".rate", pass, "p(u, floored fit) = " + plain(*r.p_predicted) + " +- " + plain(options.rate_tolerance),
+    r.checks.push_back({id + ".rate", pass,
+                        "p(u, Cauchy differences) = " + plain(*r.p_predicted) + " +- " + plain(options.rate_tolerance),
                         rate_text(f), plain(options.rate_tolerance)});
   }
 }

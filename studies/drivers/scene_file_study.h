@@ -100,8 +100,8 @@ struct SceneStudyResult {
 // every scene it solved under /scenes when `out` is given, and beside it the bondline fields of
 // every scene as CSV (bondline_fields.csv). Checks (ids "scene.<name>.*"): the limit and every
 // layer scene converged; for the paper's family, the distance u decreases as ε decreases and,
-// where the asymptotics predict a rate for the scene's (γ, δ), the floored rate of u within
-// rate_tolerance of it.
+// where the asymptotics predict a rate for the scene's (γ, δ), the rate of u from the Cauchy
+// differences within rate_tolerance of it.
 SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& options, H5Writer* out);
 
 // The thicknesses the study samples (mm, decreasing): the scene's "eps", or for the paper's
