@@ -145,6 +145,15 @@ Morph morph_bodies(const std::vector<Mesh>& meshes, const std::vector<std::strin
   out.inversion_scale = inf;
   for (std::size_t b = 0; b < meshes.size(); ++b) {
     if (offsets[b].empty()) continue;
+    // Every offset the same (a straight bondline on a body free to move away): the body
+    // translates, exactly — no solve, no round-off in its new coordinates.
+    const Eigen::Vector2d first = offsets[b].begin()->second;
+    bool translation = true;
+    for (const auto& [node, d] : offsets[b]) translation = translation && (d - first).norm() <= 1e-12 * first.norm();
+    if (translation && first.norm() > 0) {
+      out.meshes[b].nodes.rowwise() += first.transpose();
+      continue;
+    }
     const Eigen::MatrixX2d d = extend(meshes[b], names[b], offsets[b]);
     first_inversion(meshes[b], meshes[b].quads, d, names[b], out);
     first_inversion(meshes[b], meshes[b].triangles, d, names[b], out);

@@ -5,12 +5,14 @@
 // ε along their nodal normal (minus → plus), and the layer's band fills the gap. So that a layer
 // can be as thick as the joint allows, not only as thick as the plus body's first row of cells,
 // the whole plus body moves with its bondline: its nodes follow the elastic extension of the
-// bondline's offset (a plane-strain body, ν = 0.25, with the offset imposed on its bondline nodes,
-// its nodes on any other bondline held, everything else free). A straight bondline with a free
-// plus body therefore translates that body by ε (the lap joint's upper strip moves up by ε); a
-// closed curved one shrinks it (a plug); a body held on another bondline is stretched between the
-// two. The offset is linear in ε, so each cell corner's orientation is a quadratic in ε, and the
-// thickness at which the first cell inverts is found exactly.
+// bondline's offset (a plane-strain body, ν = 0.25, each cell's modulus scaled by (mean area / its
+// area) so that the small cells along the bondline move almost rigidly; the offset imposed on its
+// bondline nodes, its nodes on any other bondline held, everything else free). Where every offset
+// of a body is the same (a straight bondline, a body free to move away) the body translates by it,
+// exactly: the lap joint's upper strip moves up by ε. A closed curved bondline shrinks its plus
+// body (a plug); a body held on another bondline is squeezed between the two. The offset is linear
+// in ε, so each cell corner's orientation is a quadratic in ε, and the thickness at which the first
+// cell inverts is found exactly.
 #include <map>
 #include <string>
 #include <vector>
