@@ -1,6 +1,7 @@
 #pragma once
 // What the finite-element core needs to know about a scene: bodies, supports, loads.
-// Loads are tractions in daN/mm² (force per unit length per unit thickness in plane strain).
+// Loads are tractions in daN/mm² (force per unit length per unit thickness in plane strain) and
+// nodal forces in daN per unit thickness.
 #include <array>
 #include <string>
 #include <vector>
