@@ -18,6 +18,7 @@
 #include "cases/scene/scene_file_scenes.h"
 #include "core/mesh/gmsh_session.h"
 #include "tests/scene_folder.h"
+#include "tests/uniform_bondline.h"
 
 namespace fs = std::filesystem;
 using namespace thinlayer;
@@ -46,29 +47,9 @@ using Folder = SceneFolder;
 std::string num(double x) { return full_digits(x); }
 
 // The closed form's data. Plane strain, mm and daN.
-struct ClosedForm {
-  double W = 10, H = 10, y0 = 3, y1 = 7;  // bondline from (0, y0) to (W, y1)
-  double lambda = 4500, mu = 5400;        // both bodies
-  double lambda_g = 2000, mu_g = 1000;    // glue; limit law (d): λ̄ = λ_g, μ̄ = μ_g (γ = δ = 1)
-  double e = -1e-3, a = 2e-4;             // u = (a y, e y) + c: ε_xx = 0, ε_yy = e, 2ε_xy = a
+struct ClosedForm : UniformBondline {
+  double W = 10, H = 10, y0 = 3, y1 = 7;  // bondline from (0, y0) to (W, y1): direction (W, y1 − y0)
   std::string faces;                      // "" (contact, the paper's), or a "faces" member of the interface
-  double s() const { return (y1 - y0) / std::hypot(W, y1 - y0); }
-  double c() const { return W / std::hypot(W, y1 - y0); }
-  Eigen::Vector2d n() const { return {-s(), c()}; }  // from the lower (minus) body into the upper (plus)
-  Eigen::Vector2d t() const { return {c(), s()}; }   // n turned clockwise
-  Eigen::Matrix2d sigma() const {
-    Eigen::Matrix2d S;
-    S << lambda * e, mu * a, mu * a, (lambda + 2 * mu) * e;
-    return S;
-  }
-  double sigma_N() const { return n().dot(sigma() * n()); }
-  // The minus side pushes the plus body with −σ_N n + σ_T t = σ(−n), the traction on its face.
-  double sigma_T() const { return -t().dot(sigma() * n()); }
-  double K_N() const { return lambda_g + 2 * mu_g; }
-  double K_T() const { return mu_g; }
-  double jump_N() const { return -sigma_N() / K_N(); }  // [u]_N > 0: interpenetration under compression
-  double jump_T() const { return -sigma_T() / K_T(); }
-  Eigen::Vector2d Delta() const { return -jump_N() * n() + jump_T() * t(); }  // u⁺ − u⁻
   Eigen::Vector2d top_u() const { return Eigen::Vector2d(a * H, e * H) + Delta(); }
 
   std::string geo() const {

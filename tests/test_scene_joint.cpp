@@ -11,6 +11,7 @@
 #include "cases/scene/scene_file_scenes.h"
 #include "core/io/h5_reader.h"
 #include "tests/scene_folder.h"
+#include "tests/uniform_bondline.h"
 #include "tests/text_file.h"
 
 using namespace thinlayer;
@@ -23,23 +24,11 @@ const std::string num(double x) { return full_digits(x); }
 // uniform stress state (u = G x + c in each body, the same G): both bondlines carry the constant
 // traction σn, and with both faces bonded the bilateral law makes each jump exactly
 // [u]_N = −σ_N/K_N, [u]_T = −σ_T/K_T — here in tension across the bondlines (e > 0).
-struct TwoBondlines {
-  double lambda = 4500, mu = 5400, lambda_g = 2000, mu_g = 1000;  // daN/mm², glue case (d)
-  double e = 1e-3, a = 2e-4;
-  double s() const { return 2 / std::sqrt(104.0); }
-  double c() const { return 10 / std::sqrt(104.0); }
-  Eigen::Vector2d n() const { return {-s(), c()}; }
-  Eigen::Vector2d t() const { return {c(), s()}; }
-  Eigen::Matrix2d sigma() const {
-    Eigen::Matrix2d S;
-    S << lambda * e, mu * a, mu * a, (lambda + 2 * mu) * e;
-    return S;
+struct TwoBondlines : UniformBondline {
+  TwoBondlines() {
+    dx = 10, dy = 2;
+    e = 1e-3;
   }
-  double sigma_N() const { return n().dot(sigma() * n()); }
-  double sigma_T() const { return -t().dot(sigma() * n()); }
-  double jump_N() const { return -sigma_N() / (lambda_g + 2 * mu_g); }
-  double jump_T() const { return -sigma_T() / mu_g; }
-  Eigen::Vector2d Delta() const { return -jump_N() * n() + jump_T() * t(); }  // u⁺ − u⁻ across one bondline
   Eigen::Vector2d top_u() const { return Eigen::Vector2d(a * 12, e * 12) + 2 * Delta(); }
 
   std::string geo() const {

@@ -38,6 +38,14 @@ std::string verdict_text(const SceneValidityRow& v) {
   return sci(v.eps_max, 2);
 }
 
+// The distance of quantity q in every row (samples or floor levels), in order.
+template <typename Row>
+std::vector<double> column(const std::vector<Row>& rows, const std::string& q) {
+  std::vector<double> e;
+  for (const Row& row : rows) e.push_back(row.e.at(q));
+  return e;
+}
+
 void write_fits(H5Writer& out, const std::string& g, const std::string& q, const std::optional<PowerLawFit>& f,
                 const std::string& prefix) {
   out.attr(g, prefix + q, f ? f->p : 0.0);
@@ -167,8 +175,10 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
   out.attr(g, "tolerance", o.tolerance);
   out.attr(g, "p_predicted", r.p_predicted ? *r.p_predicted : -1.0);
   std::string cases;
-  for (std::size_t i = 0; i < spec.interfaces.size(); ++i)
-    cases += (i ? "," : "") + std::string(1, bulk.limit_law(static_cast<int>(i), r.samples.front().eps).table1_case());
+  for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
+    if (i) cases += ',';
+    cases += bulk.limit_law(static_cast<int>(i), r.samples.front().eps).table1_case();
+  }
   out.attr(g, "table1_case", cases);
   out.attr(g, "characteristic_length", bulk.characteristic_length());
   out.attr(g, "characteristic_length_units", std::string("mm"));
@@ -191,9 +201,7 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
   put(out, g + "/layer_scene", ids, "", "the layer scene of each sample (/scenes/<id>)");
   put(out, g + "/limit_scene", limit_ids, "", "the limit scene each sample is measured against (/scenes/<id>)");
   for (const std::string& q : scene_distance_quantities()) {
-    std::vector<double> e;
-    for (const SceneSample& s : r.samples) e.push_back(s.e.at(q));
-    put(out, g + "/e_" + q, e, "1 (relative)", "relative discrete L2 distance of " + quantity_descriptions().at(q));
+    put(out, g + "/e_" + q, column(r.samples, q), "1 (relative)", "relative discrete L2 distance of " + quantity_descriptions().at(q));
     write_fits(out, g, q, r.fit.at(q), "p_");
     const auto& ff = r.floor_fit.at(q);
     out.attr(g, "p_floor_" + q, ff ? ff->p : 0.0);
@@ -233,9 +241,7 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
     put(out, f + "/layer_scene", layer_ids, "", "the layer scene at h (/scenes/<id>)");
     put(out, f + "/limit_scene", limit_ids_f, "", "the limit scene at h (/scenes/<id>)");
     for (const std::string& q : scene_distance_quantities()) {
-      std::vector<double> e;
-      for (const SceneFloorRow& row : r.floor) e.push_back(row.e.at(q));
-      put(out, f + "/floor_" + q, e, "1 (relative)", "the mesh floor: distance of " + quantity_descriptions().at(q));
+      put(out, f + "/floor_" + q, column(r.floor, q), "1 (relative)", "the mesh floor: distance of " + quantity_descriptions().at(q));
       write_fits(out, f, q, r.floor_rate.at(q), "rate_");
     }
     out.attr(f, "floor_eps_factor", o.floor_eps_factor);
