@@ -10,6 +10,7 @@
 
 #include "cases/bar/bar.h"
 #include "core/io/scene_record.h"
+#include "core/solvers/condensed_interface.h"
 #include "core/solvers/fast_solver.h"
 #include "core/solvers/relaxation_solver.h"
 #include "cases/dovetail/dovetail_scenes.h"
@@ -53,6 +54,53 @@ TEST(StopCause, ACappedSolveSaysIterationCapNotConverged) {
     EXPECT_NE(r.message.find("iteration cap"), std::string::npos) << r.message;
   }
   EXPECT_GT(fast.condition_estimate, 1.0);  // estimated, and a condition number is >= 1
+}
+
+// SPEC §1.5: a solve may stop above the tolerance only at its round-off floor, and the residual it
+// is judged by is the answer's own (evaluated in extended precision). The floor is what rounding
+// the answer to double moves the residual by: rounding a converged answer to single precision
+// (2^29 times coarser) moves it by at most that many floors, and a solve stopped early (a stall,
+// not precision) sits far above its floor and is not called "round-off floor".
+TEST(RoundOffFloor, BoundsWhatRoundingTheAnswerMovesTheResidualBy) {
+  bar::LayerOptions layer;
+  layer.eps = 1e-3;
+  layer.lambda_eps = 1e-3 * 4.5e8;  // Table 3's row 1: a layer far stiffer than the bar
+  layer.mu_eps = 1e-3 * 5.4e8;
+  const Model model = bar::make_layer_model(small_bar(), layer);
+  const LinearSystem system(model);
+  const ContactProblem problem(system, bar::make_layer_interfaces(model));
+  const CondensedInterface condensed(problem);
+  const SolveReport answer = solve_fast(problem, condensed, {});
+  ASSERT_TRUE(answer.converged) << answer.message;
+  const double floor = answer.residual.floor();
+  ASSERT_GT(floor, 0);
+  // The answer rounded to float, each DOF and force: its residual grows, but within the floor
+  // scaled by the ratio of the two precisions' unit round-offs (the floor is a first-order bound,
+  // a sum of magnitudes: measured 1.4e-7 against the bound 2.0e-4 here, the answer at 9.9e-15).
+  const auto to_float = [](const Eigen::VectorXd& v) { return v.cast<float>().cast<double>().eval(); };
+  const Eigen::VectorXd w = to_float(answer.w);
+  const Residual rounded = contact_residual(problem, condensed.displacement(problem, to_float(answer.r), w),
+                                            to_float(answer.r), condensed.band_coordinates(w));
+  const double precision_ratio = std::ldexp(1.0, 53 - 24);
+  EXPECT_GT(rounded.value(), 1e3 * answer.residual.value());  // rounding did move it
+  EXPECT_LT(rounded.value(), precision_ratio * floor + answer.residual.value());
+}
+
+TEST(RoundOffFloor, ASolveStoppedEarlyIsAStallNotTheFloor) {
+  bar::LayerOptions layer;
+  layer.eps = 1e-3;
+  layer.lambda_eps = 1e-3 * 4.5e2;  // Table 3's row 3
+  layer.mu_eps = 1e-3 * 5.4e2;
+  const Model model = bar::make_layer_model(small_bar(), layer);
+  const LinearSystem system(model);
+  const ContactProblem problem(system, bar::make_layer_interfaces(model));
+  SolverOptions capped;
+  capped.max_iterations = 3;
+  const SolveReport r = solve_fast(problem, capped);
+  ASSERT_FALSE(r.converged);
+  EXPECT_GT(r.residual.value(), 1e3 * r.residual.floor());
+  EXPECT_NE(r.stop_cause, StopCause::RoundOffFloor) << r.message;
+  EXPECT_EQ(r.stop_cause, StopCause::IterationCap) << r.message;
 }
 
 TEST(StopCause, AFloatingLayerWithEveryContactOpenIsSingular) {

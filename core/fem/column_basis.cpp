@@ -125,26 +125,28 @@ Eigen::SparseMatrix<double> column_stiffness(const Mesh& mesh, const BandLayout&
   return K;
 }
 
-Eigen::VectorXd column_forces(const Eigen::VectorXd& nodal_forces, const BandLayout& layout) {
-  Eigen::VectorXd z = Eigen::VectorXd::Zero(layout.size());
+namespace {
+
+template <typename Vector>
+Vector to_columns(const Vector& nodal_forces, const BandLayout& layout) {
+  Vector z = Vector::Zero(layout.size());
   for (int i = 0; i < layout.columns; ++i)
     for (int j = 0; j <= layout.across; ++j)
       for (int c = 0; c < 2; ++c) {
-        const double f = nodal_forces[2 * layout.node(i, j) + c];
+        const auto f = nodal_forces[2 * layout.node(i, j) + c];
         z[layout.t(i) + c] += f;
         if (j > 0) z[layout.v(i, j) + c] += f;
       }
   return z;
 }
 
-namespace {
-
 // sign −1: the inverse of column_forces; +1: its bound.
-Eigen::VectorXd to_nodal(const Eigen::VectorXd& column, const BandLayout& layout, double sign) {
-  Eigen::VectorXd f(2 * layout.columns * (layout.across + 1));
+template <typename Vector>
+Vector to_nodal(const Vector& column, const BandLayout& layout, double sign) {
+  Vector f(2 * layout.columns * (layout.across + 1));
   for (int i = 0; i < layout.columns; ++i)
     for (int c = 0; c < 2; ++c) {
-      double foot = column[layout.t(i) + c];
+      auto foot = column[layout.t(i) + c];
       for (int j = 1; j <= layout.across; ++j) {
         f[2 * layout.node(i, j) + c] = column[layout.v(i, j) + c];
         foot += sign * column[layout.v(i, j) + c];
@@ -156,7 +158,19 @@ Eigen::VectorXd to_nodal(const Eigen::VectorXd& column, const BandLayout& layout
 
 }  // namespace
 
+Eigen::VectorXd column_forces(const Eigen::VectorXd& nodal_forces, const BandLayout& layout) {
+  return to_columns(nodal_forces, layout);
+}
+
+LongVector column_forces(const LongVector& nodal_forces, const BandLayout& layout) {
+  return to_columns(nodal_forces, layout);
+}
+
 Eigen::VectorXd nodal_forces(const Eigen::VectorXd& column_forces, const BandLayout& layout) {
+  return to_nodal(column_forces, layout, -1.0);
+}
+
+LongVector nodal_forces(const LongVector& column_forces, const BandLayout& layout) {
   return to_nodal(column_forces, layout, -1.0);
 }
 

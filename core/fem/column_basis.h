@@ -18,6 +18,7 @@
 #include <Eigen/SparseCore>
 
 #include "core/fem/material.h"
+#include "core/linalg/extended_products.h"
 #include "core/mesh/mesh.h"
 
 namespace thinlayer {
@@ -51,6 +52,9 @@ Eigen::SparseMatrix<double> column_stiffness(const Mesh& mesh, const BandLayout&
 // Nodal values (2 per node, in node order) to the column basis and back. Forces transform with
 // the transpose of the displacements' map: a translation takes the sum of its column's forces.
 Eigen::VectorXd column_forces(const Eigen::VectorXd& nodal_forces, const BandLayout& layout);
+// The same maps in extended precision, for the residual's evaluation (core/solvers/contact_problem.h).
+LongVector column_forces(const LongVector& nodal_forces, const BandLayout& layout);
+LongVector nodal_forces(const LongVector& column_forces, const BandLayout& layout);
 // The inverse of column_forces: the nodal forces whose column forces these are (a node above the
 // foot takes its v force; the foot takes its column's t force less those). Exact maps of ±1
 // sums, so a body's imbalance evaluated in the column basis keeps its digits in nodal form.

@@ -103,6 +103,7 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   s.residual_floor_per_body = report.residual.per_body_floor;
   s.residual_nodal_floor_per_body = report.residual.per_body_nodal_floor;
   s.residual_per_interface = report.residual.per_interface;
+  s.residual_floor_per_interface = report.residual.per_interface_floor;
   for (const Interface& i : problem.interfaces()) s.interface_names.push_back(i.name);
   s.numbers["tolerance"] = report.tolerance;
   s.numbers["wall_time_s"] = report.wall_time_s;
@@ -131,6 +132,8 @@ void require_finite_results(const SceneRecord& scene) {
     if (scene.numbers.count(name)) check(name, &scene.numbers.at(name), &scene.numbers.at(name) + 1);
   check("residual_per_body", scene.residual_per_body.begin(), scene.residual_per_body.end());
   check("residual_floor_per_body", scene.residual_floor_per_body.begin(), scene.residual_floor_per_body.end());
+  check("residual_floor_per_interface", scene.residual_floor_per_interface.begin(),
+        scene.residual_floor_per_interface.end());
   check("residual_nodal_floor_per_body", scene.residual_nodal_floor_per_body.begin(),
         scene.residual_nodal_floor_per_body.end());
   check("residual_per_interface", scene.residual_per_interface.begin(), scene.residual_per_interface.end());
@@ -228,6 +231,9 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
   residuals("residual_nodal_floor_per_body", scene.residual_nodal_floor_per_body, "bodies", scene.body_names,
             "K_b u_b from the nodal u as written: what re-evaluating the file's u resolves");
   residuals("residual_per_interface", scene.residual_per_interface, "interfaces", scene.interface_names, nullptr);
+  // What rounding the answer's u and r to double moves each interface's natural map by.
+  residuals("residual_floor_per_interface", scene.residual_floor_per_interface, "interfaces", scene.interface_names,
+            "u_eps (|r| + kappa (|B||u| + |g_D| + |C r|)) per row, the answer rounded to double");
 }
 
 }  // namespace thinlayer

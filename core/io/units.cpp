@@ -56,6 +56,7 @@ std::string unit_of(const std::string& name) {
       {"residual_per_body", "1 (relative)"},
       {"residual_per_interface", "1 (relative)"},
       {"residual_floor_per_body", "1 (relative)"},
+      {"residual_floor_per_interface", "1 (relative)"},
       {"residual_nodal_floor_per_body", "1 (relative)"},
   };
   auto it = units.find(name);

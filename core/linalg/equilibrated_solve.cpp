@@ -8,6 +8,8 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
+#include "core/linalg/extended_products.h"
+
 namespace thinlayer {
 
 namespace {
@@ -68,7 +70,7 @@ bool sparse_solve(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& r
   auto solve = [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(lu.solve(v)); };
   x = col.asDiagonal() * solve(row.asDiagonal() * b);
   for (int refinement = 0; refinement < refinements; ++refinement)
-    x += col.asDiagonal() * solve(row.asDiagonal() * (b - A * x));
+    x += col.asDiagonal() * solve(row.asDiagonal() * residual(A, b, x));
   if (rcond) {
     double norm1 = 0;
     for (Eigen::Index j = 0; j < M.outerSize(); ++j) {
@@ -90,7 +92,7 @@ Eigen::VectorXd dense_solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& row
   if (rcond) *rcond = lu.rcond();
   Eigen::VectorXd x = col.asDiagonal() * lu.solve(row.asDiagonal() * b);
   for (int refinement = 0; refinement < refinements; ++refinement)
-    x += col.asDiagonal() * lu.solve(row.asDiagonal() * (b - A * x));
+    x += col.asDiagonal() * lu.solve(row.asDiagonal() * residual(A, b, x));
   return x;
 }
 

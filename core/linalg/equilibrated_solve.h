@@ -2,7 +2,9 @@
 // Solves A x = b for a square matrix that mixes compliances (mm/daN), stiffnesses (daN/mm) and
 // plain coefficients, whose scales differ by up to 1e15 in the layer mode (the contact
 // active-set systems of core/solvers/active_set.h): equilibrate rows and columns (Ruiz sweeps),
-// factor once with partial pivoting, refine the solution against the original A.
+// factor once with partial pivoting, refine the solution against the original A with residuals
+// computed in extended precision (core/linalg/extended_products.h), so that the refined solution
+// carries the round-off of its own digits rather than that of the cancellation in b − A x.
 // A large and mostly empty A (the layer's mixed systems: a dense block of contact rows, the
 // layer's banded stiffness, sparse coupling) is factored by a sparse LU instead of a dense one:
 // at 450 unknowns 1 ms against 8 ms, the same answer to round-off.

@@ -140,6 +140,22 @@ std::vector<Eigen::VectorXd> CondensedInterface::band_coordinates(const Eigen::V
   return z;
 }
 
+Eigen::VectorXd CondensedInterface::floating_unknowns(const Eigen::VectorXd& u,
+                                                      const std::vector<Eigen::VectorXd>& band_z) const {
+  Eigen::VectorXd x(S_.rows());
+  int offset = 0;
+  size_t band = 0;
+  for (const FloatingCondensation& f : floating_) {
+    if (f.is_band()) {
+      x.segment(offset, f.size()) = band_z.at(band++);
+    } else {  // a nodal body's x is its face DOFs
+      for (int k = 0; k < f.size(); ++k) x[offset + k] = u[f.face_dofs()[k]];
+    }
+    offset += f.size();
+  }
+  return x;
+}
+
 Eigen::MatrixXd CondensedInterface::floating_selection(LayerSelection face) const {
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(S_.rows(), S_.cols());
   int offset = 0;

@@ -51,6 +51,9 @@ class CondensedInterface {
   // Each layer band's displacement in its column basis (LinearSystem::floating_bands order), cut
   // out of x: what contact_residual evaluates a band's balance on.
   std::vector<Eigen::VectorXd> band_coordinates(const Eigen::VectorXd& x) const;
+  // The inverse: x from the free DOFs u and each band's column basis z (an answer solved without
+  // condensation, core/solvers/mixed_system.h).
+  Eigen::VectorXd floating_unknowns(const Eigen::VectorXd& u, const std::vector<Eigen::VectorXd>& band_z) const;
   double setup_time_s() const { return setup_time_s_; }  // factorisations + condensation
   // The smallest of the factors' SparseCholesky::rcond() (1 if none): a crude, optimistic
   // estimate, for reporting a loss of accuracy.

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/fem/column_basis.h"
+#include "core/linalg/extended_products.h"
 
 namespace thinlayer {
 
@@ -21,8 +22,6 @@ double nodal_stiffness(const LinearSystem& system, int global_dof_x, const Eigen
   const auto& K = system.K();
   return e.x() * e.x() * K.coeff(ix, ix) + 2 * e.x() * e.y() * K.coeff(ix, iy) + e.y() * e.y() * K.coeff(iy, iy);
 }
-
-double clamp_abs(double value, double bound) { return std::clamp(value, -bound, bound); }
 
 }  // namespace
 
@@ -69,42 +68,58 @@ ContactProblem::ContactProblem(const LinearSystem& system, std::vector<Interface
   B_.setFromTriplets(triplets.begin(), triplets.end());
 }
 
-Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, const Eigen::Vector2d& d,
-                            const Eigen::Vector2d& kappa) {
-  Eigen::Vector2d R;
+namespace {
+
+// The natural map of one node in any precision (the residual evaluates it in long double).
+template <typename Scalar>
+Eigen::Matrix<Scalar, 2, 1> natural_map_in(const InterfaceLaw& law, const Eigen::Matrix<Scalar, 2, 1>& r,
+                                           const Eigen::Matrix<Scalar, 2, 1>& d, const Eigen::Vector2d& kappa) {
+  Eigen::Matrix<Scalar, 2, 1> R;
   if (law.bilateral) {  // d = 0 on each row that carries a force, whatever the sign of r (SPEC §1.6)
-    R[0] = law.normal_active() ? kappa[0] * d[0] : r[0];
-    R[1] = law.K_T() > 0 ? kappa[1] * d[1] : r[1];
+    R[0] = law.normal_active() ? Scalar(kappa[0]) * d[0] : r[0];
+    R[1] = law.K_T() > 0 ? Scalar(kappa[1]) * d[1] : r[1];
     return R;
   }
-  const double p = -r[0];  // contact pressure force, ≥ 0 in compression
-  R[0] = law.normal_active() ? p - std::max(0.0, p + kappa[0] * d[0]) : r[0];
-  const double threshold = law.tangential_active() ? law.friction * std::max(p, 0.0) : 0.0;
-  R[1] = law.K_T() > 0 ? r[1] - clamp_abs(r[1] - kappa[1] * d[1], threshold) : r[1];
+  const Scalar p = -r[0];  // contact pressure force, ≥ 0 in compression
+  R[0] = law.normal_active() ? p - std::max(Scalar(0), p + Scalar(kappa[0]) * d[0]) : r[0];
+  const Scalar threshold = law.tangential_active() ? Scalar(law.friction) * std::max(p, Scalar(0)) : Scalar(0);
+  R[1] = law.K_T() > 0 ? r[1] - std::clamp(r[1] - Scalar(kappa[1]) * d[1], -threshold, threshold) : r[1];
   return R;
 }
 
+}  // namespace
+
+Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, const Eigen::Vector2d& d,
+                            const Eigen::Vector2d& kappa) {
+  return natural_map_in<double>(law, r, d, kappa);
+}
+
 double Residual::floor() const {
-  return per_body_floor.empty() ? 0.0 : *std::max_element(per_body_floor.begin(), per_body_floor.end());
+  double f = 0;
+  for (double v : per_body_floor) f = std::max(f, v);
+  for (double v : per_interface_floor) f = std::max(f, v);
+  return f;
 }
 
 namespace {
 
-// A band's imbalance and its round-off bound, evaluated in its column basis and written over the
-// nodal ones at its free DOFs.
-void band_imbalance(const FloatingBand& band, const Eigen::VectorXd& z, const Eigen::VectorXd& interface_force,
-                    const Eigen::VectorXd& interface_force_bound, Eigen::VectorXd& imbalance,
-                    Eigen::VectorXd& magnitude) {
+using Long = long double;
+
+// A band's imbalance (extended precision) and its round-off bound, evaluated in its column basis
+// and written over the nodal ones at its free DOFs.
+void band_imbalance(const FloatingBand& band, const Eigen::VectorXd& z, const LongVector& interface_force,
+                    const Eigen::VectorXd& interface_force_bound, LongVector& imbalance, Eigen::VectorXd& magnitude) {
   const int n = static_cast<int>(band.free_dof.size());
-  Eigen::VectorXd contact(n), contact_bound(n);
+  LongVector contact(n);
+  Eigen::VectorXd contact_bound(n);
   for (int k = 0; k < n; ++k) {
     contact[k] = interface_force[band.free_dof[k]];
     contact_bound[k] = interface_force_bound[band.free_dof[k]];
   }
-  const Eigen::VectorXd column = band.K * z - band.F - column_forces(contact, band.layout);
+  const LongVector column = times(band.K, z) - band.F.cast<Long>() - column_forces(contact, band.layout);
   const Eigen::VectorXd column_bound = band.K.cwiseAbs() * z.cwiseAbs() + band.F.cwiseAbs() +
                                        column_forces(contact_bound, band.layout);
-  const Eigen::VectorXd nodal = nodal_forces(column, band.layout);
+  const LongVector nodal = nodal_forces(column, band.layout);
   const Eigen::VectorXd nodal_bound = nodal_force_bound(column_bound, band.layout);
   for (int k = 0; k < n; ++k) {
     imbalance[band.free_dof[k]] = nodal[k];
@@ -118,15 +133,17 @@ Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& 
                           const Eigen::VectorXd& r, const std::vector<Eigen::VectorXd>& band_z) {
   const LinearSystem& system = problem.system();
   const double floor = residual_load_floor * system.F().norm();
-  auto relative = [floor](double norm2, double scale2) {
-    const double scale = std::max(std::sqrt(scale2), floor);
-    return scale > 0 ? std::sqrt(norm2) / scale : std::sqrt(norm2);
+  auto relative = [floor](Long norm2, Long scale2) {
+    const double scale = std::max(double(std::sqrt(scale2)), floor);
+    return scale > 0 ? double(std::sqrt(norm2)) / scale : double(std::sqrt(norm2));
   };
+  constexpr double unit_roundoff = 0.5 * std::numeric_limits<double>::epsilon();
   Residual res;
 
-  // Bulk, body by body: the imbalance and the forces on each body's own DOFs.
-  const Eigen::VectorXd interface_force = problem.B().transpose() * r;
-  Eigen::VectorXd imbalance = system.K() * u_free - system.F() - interface_force;
+  // Bulk, body by body: the imbalance and the forces on each body's own DOFs, evaluated in
+  // extended precision (SPEC §1.5: what is left is the answer's, not the evaluation's).
+  const LongVector interface_force = transpose_times(problem.B(), r);
+  LongVector imbalance = times(system.K(), u_free) - system.F().cast<Long>() - interface_force;
   const Eigen::VectorXd interface_force_bound = problem.B().cwiseAbs().transpose() * r.cwiseAbs();
   const Eigen::VectorXd nodal_magnitude =
       system.K().cwiseAbs() * u_free.cwiseAbs() + system.F().cwiseAbs() + interface_force_bound;
@@ -140,17 +157,16 @@ Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& 
       band_imbalance(bands[k], band_z[k], interface_force, interface_force_bound, imbalance, magnitude);
   }
   const int bodies = system.num_bodies();
-  std::vector<double> imbalance2(bodies, 0.0), load2(bodies, 0.0), contact2(bodies, 0.0), magnitude2(bodies, 0.0),
-      nodal_magnitude2(bodies, 0.0);
+  std::vector<Long> imbalance2(bodies, 0), load2(bodies, 0), contact2(bodies, 0), magnitude2(bodies, 0),
+      nodal_magnitude2(bodies, 0);
   for (int i = 0; i < system.num_free(); ++i) {
     const int b = system.body_of(i);
     imbalance2[b] += imbalance[i] * imbalance[i];
-    load2[b] += system.F()[i] * system.F()[i];
+    load2[b] += Long(system.F()[i]) * system.F()[i];
     contact2[b] += interface_force[i] * interface_force[i];
-    magnitude2[b] += magnitude[i] * magnitude[i];
-    nodal_magnitude2[b] += nodal_magnitude[i] * nodal_magnitude[i];
+    magnitude2[b] += Long(magnitude[i]) * magnitude[i];
+    nodal_magnitude2[b] += Long(nodal_magnitude[i]) * nodal_magnitude[i];
   }
-  constexpr double unit_roundoff = 0.5 * std::numeric_limits<double>::epsilon();
   for (int b = 0; b < bodies; ++b) {
     res.per_body.push_back(relative(imbalance2[b], std::max(load2[b], contact2[b])));
     res.per_body_floor.push_back(unit_roundoff * relative(magnitude2[b], std::max(load2[b], contact2[b])));
@@ -158,22 +174,31 @@ Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& 
     res.bulk = std::max(res.bulk, res.per_body.back());
   }
 
-  // Interfaces, one by one: the natural map against the forces that interface carries.
-  const Eigen::VectorXd g = problem.jumps(u_free);
+  // Interfaces, one by one: the natural map against the forces that interface carries, in
+  // extended precision too; its floor is what rounding u and r to double moves it by,
+  // u_eps (|r| + κ (|B||u| + |g_D| + |C r|)) per row.
+  const LongVector g = times(problem.B(), u_free) + problem.jump_offset().cast<Long>();
+  const Eigen::VectorXd g_bound = problem.B().cwiseAbs() * u_free.cwiseAbs() + problem.jump_offset().cwiseAbs();
   const int interfaces = static_cast<int>(problem.interfaces().size());
-  std::vector<double> map2(interfaces, 0.0), force2(interfaces, 0.0);
+  std::vector<Long> map2(interfaces, 0), force2(interfaces, 0), bound2(interfaces, 0);
   for (int k = 0; k < problem.num_nodes(); ++k) {
-    Eigen::Vector2d d;
+    Eigen::Matrix<Long, 2, 1> d, rk;
     for (int row = 0; row < 2; ++row) {
       const double c = problem.compliance()[2 * k + row];
-      d[row] = g[2 * k + row] + (std::isfinite(c) ? c * r[2 * k + row] : 0.0);
+      rk[row] = r[2 * k + row];
+      d[row] = g[2 * k + row] + (std::isfinite(c) ? Long(c) * rk[row] : Long(0));
+      const double kappa = problem.kappa()[2 * k + row];
+      const double row_bound = std::abs(r[2 * k + row]) +
+          kappa * (g_bound[2 * k + row] + (std::isfinite(c) ? c * std::abs(r[2 * k + row]) : 0.0));
+      bound2[problem.interface_of(k)] += Long(row_bound) * row_bound;
     }
-    const Eigen::Vector2d R = natural_map(problem.law(k), r.segment<2>(2 * k), d, problem.kappa().segment<2>(2 * k));
+    const Eigen::Matrix<Long, 2, 1> R = natural_map_in<Long>(problem.law(k), rk, d, problem.kappa().segment<2>(2 * k));
     map2[problem.interface_of(k)] += R.squaredNorm();
-    force2[problem.interface_of(k)] += r.segment<2>(2 * k).squaredNorm();
+    force2[problem.interface_of(k)] += rk.squaredNorm();
   }
   for (int i = 0; i < interfaces; ++i) {
     res.per_interface.push_back(relative(map2[i], force2[i]));
+    res.per_interface_floor.push_back(unit_roundoff * relative(bound2[i], force2[i]));
     res.interface = std::max(res.interface, res.per_interface.back());
   }
   return res;

@@ -53,7 +53,10 @@ class ContactProblem {
   Eigen::VectorXd g_D_, C_, kappa_;
 };
 
-// SPEC §1.5: the residual every solver is judged by, interface by interface and body by body.
+// SPEC §1.5: the residual every solver is judged by, interface by interface and body by body,
+// evaluated in extended precision (long double products and sums): its value is the answer's own,
+// not that of evaluating it in double, so a residual above the tolerance is the answer's, and
+// within its floor only where the answer's digits allow no better (SPEC §1.5, "round-off floor").
 //  - interface i: ‖natural map on i‖ / max(‖r_i‖, floor), the map being a force (r minus its
 //    projection, see natural_map);
 //  - body b: ‖K_b u_b - F_b - (Bᵀ r)_b‖ / max(‖F_b‖, ‖(Bᵀ r)_b‖, floor).
@@ -79,8 +82,12 @@ struct Residual {
   // The same bound for the nodal u alone (K_b u_b evaluated nodally, as a user re-evaluating the
   // written `u` would): equal to per_body_floor except on a band given in its column basis.
   std::vector<double> per_body_nodal_floor;
+  // The round-off floor of each interface's residual: what rounding the answer's u and r to double
+  // moves its natural map by, u_eps ‖|r| + κ (|B||u| + |g_D| + |C r|)‖ relative to the same scale (a film
+  // that slid 35 mm holds its normal jump, 1e-20 mm, in the last digits of its position).
+  std::vector<double> per_interface_floor;
   double value() const { return std::max(interface, bulk); }
-  double floor() const;              // the largest body floor
+  double floor() const;              // the largest floor, body or interface
 };
 // band_z: the displacement of each layer band (LinearSystem::floating_bands, in order) in its
 // column basis z (core/fem/column_basis.h), when the solver has it (empty: nodal u only). A band's

@@ -17,8 +17,9 @@ enum class StopCause {
   IterationCap,    // the iteration cap was reached first
   Singular,        // the answer is not unique: a floating body is held by none of its contacts
   LossOfAccuracy,  // the statuses settled but the linear solve could not reach the tolerance
-  RoundOffFloor,   // the residual is within what double precision resolves for this answer
-                   // (Residual::per_body_floor), which lies above the tolerance
+  RoundOffFloor,   // the residual, evaluated in extended precision, is within what rounding this
+                   // answer to double moves it by (Residual::floor(), bodies and interfaces), which
+                   // lies above the tolerance; a residual above its floor is a stall (another cause)
   LayerAdrift,     // a floating layer is pushed by a force only the selection spring resists
                    // (core/solvers/floating_layer.h): its exact position is beyond the proximal steps
   NonFinite,       // NaN or Inf appeared in the iterate

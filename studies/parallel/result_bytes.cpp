@@ -31,14 +31,14 @@ void get(ByteReader& r, MeshQuality& q) {
 void put(ByteWriter& w, const SolveReport& s) {
   put(w, s.solver), put(w, s.u), put(w, s.r), put(w, s.w), put(w, s.iterations);
   put(w, s.residual.interface), put(w, s.residual.bulk), put(w, s.residual.per_interface), put(w, s.residual.per_body);
-  put(w, s.residual.per_body_floor), put(w, s.residual.per_body_nodal_floor);
+  put(w, s.residual.per_body_floor), put(w, s.residual.per_body_nodal_floor), put(w, s.residual.per_interface_floor);
   put(w, s.tolerance), put(w, s.converged);
   put(w, s.stop_cause), put(w, s.condition_estimate), put(w, s.wall_time_s), put(w, s.message);
 }
 void get(ByteReader& r, SolveReport& s) {
   get(r, s.solver), get(r, s.u), get(r, s.r), get(r, s.w), get(r, s.iterations);
   get(r, s.residual.interface), get(r, s.residual.bulk), get(r, s.residual.per_interface), get(r, s.residual.per_body);
-  get(r, s.residual.per_body_floor), get(r, s.residual.per_body_nodal_floor);
+  get(r, s.residual.per_body_floor), get(r, s.residual.per_body_nodal_floor), get(r, s.residual.per_interface_floor);
   get(r, s.tolerance), get(r, s.converged);
   get(r, s.stop_cause), get(r, s.condition_estimate), get(r, s.wall_time_s), get(r, s.message);
 }

@@ -1,0 +1,38 @@
+#pragma once
+// A sparse LU (UMFPACK) of a square matrix whose pattern stays fixed while its values change: the
+// contact problem's mixed system (core/solvers/mixed_system.h), whose status rows change from one
+// active-set step to the next. The symbolic analysis (fill-reducing order) is done once; each
+// factorisation is numeric only. Rows and columns are equilibrated (Ruiz sweeps: the mixed system
+// mixes stiffnesses in daN/mm, compliances in mm/daN and a floating layer's film rows 1e-15 below
+// the adherents'), and every solve is refined against the original matrix with residuals computed
+// in extended precision (core/linalg/extended_products.h).
+#include <memory>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace thinlayer {
+
+class SparseLU {
+ public:
+  SparseLU();
+  ~SparseLU();
+  SparseLU(const SparseLU&) = delete;
+  SparseLU& operator=(const SparseLU&) = delete;
+
+  // Factors A (its pattern the same at every call; analysed at the first). False if A is singular
+  // to working precision (a floating body held by nothing).
+  bool factor(const Eigen::SparseMatrix<double>& A);
+  // x with A x = b, refined twice.
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // UMFPACK's reciprocal condition estimate of the equilibrated matrix (the smallest over largest
+  // |U_ii|: crude, for reports).
+  double rcond() const { return rcond_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  double rcond_ = 0;
+};
+
+}  // namespace thinlayer
