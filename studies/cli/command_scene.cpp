@@ -9,7 +9,6 @@
 
 #include "core/io/output_target.h"
 #include "core/io/vtu_writer.h"
-#include "studies/cli/args.h"
 #include "studies/tools/format.h"
 #include "studies/cli/options.h"
 #include "studies/parallel/process_group.h"
@@ -28,27 +27,29 @@ struct SceneSolveInput {
   SolverOptions options;
 };
 
-SceneSolveInput parse_solve(const std::vector<std::string>& argv) {
-  const Args args(argv, {"scene", "mode", "eps", "out", "vtu", "solver", "tolerance", "max-iterations", "omega"},
-                  {"json", "verbose"});
+// What applies to a scene file's solve; the bar's and the dovetail's options do not.
+const std::set<std::string> scene_solve_options = {"scene", "mode", "eps", "out", "vtu", "json", "verbose",
+                                                   "solver", "tolerance", "max-iterations", "omega"};
+
+SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
+  require_only(c, scene_solve_options, "a scene file (--scene)");
   SceneSolveInput in;
-  in.scene = args.text("scene", "");
+  in.scene = a.scene;
   if (in.scene.empty()) throw std::invalid_argument("--scene needs a file");
-  in.mode = args.text("mode", "limit");
-  if (in.mode != "limit" && in.mode != "layer") throw std::invalid_argument("unknown mode '" + in.mode + "' (expected limit or layer)");
+  in.mode = given(c, "mode") ? a.mode : "limit";
   if (in.mode == "layer") {
-    if (!args.has("eps")) throw std::invalid_argument("layer mode needs --eps");
-    in.eps = args.number("eps", 0);
+    if (!given(c, "eps")) throw std::invalid_argument("layer mode needs --eps");
+    in.eps = a.eps;
     if (!(in.eps > 0) || std::isinf(in.eps)) throw std::invalid_argument("--eps must be finite and > 0");
-  } else if (args.has("eps")) {
+  } else if (given(c, "eps")) {
     throw std::invalid_argument("--eps applies to the layer mode only");
   }
-  in.solver = parse_solver(args.text("solver", "fast"));
-  in.options = parse_solver_options(args);
-  in.options.verbose = args.has("verbose");
-  in.json = args.has("json");
-  in.out = args.text("out", "");
-  in.vtu = args.text("vtu", "");
+  in.solver = parse_solver(given(c, "solver") ? a.solver : "fast");
+  in.options = parse_solver_options(c, a);
+  in.options.verbose = a.verbose;
+  in.json = a.json;
+  in.out = a.out;
+  in.vtu = a.vtu;
   auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
   if (!in.out.empty() && !in.vtu.empty() && target(in.out) == target(in.vtu))
     throw std::invalid_argument("--out and --vtu name the same file");
@@ -135,17 +136,11 @@ int fail(const std::string& command, const std::exception& e, int status) {
 
 }  // namespace
 
-bool names_scene(const std::vector<std::string>& argv) {
-  for (const std::string& a : argv)
-    if (a == "--scene" || a.rfind("--scene=", 0) == 0) return true;
-  return false;
-}
-
-int command_solve_scene(const std::vector<std::string>& argv) {
+int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   SceneSolveInput in;
   std::unique_ptr<SceneFileBulk> bulk;
   try {
-    in = parse_solve(argv);
+    in = parse_solve(command, args);
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
     bulk = std::make_unique<SceneFileBulk>(read_scene_spec(in.scene));
@@ -180,7 +175,7 @@ int command_solve_scene(const std::vector<std::string>& argv) {
   }
 }
 
-int command_study_scene(const std::string& study, const std::vector<std::string>& argv) {
+int command_study_scene(const std::string& study, const CLI::App& c, const StudyArgs& a) {
   SceneStudyOptions options;
   std::string out_dir;
   std::unique_ptr<SceneFileBulk> bulk;
@@ -188,24 +183,24 @@ int command_study_scene(const std::string& study, const std::vector<std::string>
     if (study != "convergence" && study != "validity")
       throw std::invalid_argument("--scene applies to study convergence and study validity only");
     if (!refuse_unless_one_process("study " + study + " --scene")) return 2;
-    std::set<std::string> valued = {"scene", "out", "eps", "tolerance", "threads"};
-    if (study == "validity") valued.insert("bisection-steps");
-    const Args args(argv, valued, {"quiet"});
-    const std::string scene = args.text("scene", "");
+    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet"};
+    if (study == "validity") allowed.insert("bisection-steps");
+    require_only(c, allowed, "study " + study + " --scene");
+    const std::string scene = a.scene;
     if (scene.empty()) throw std::invalid_argument("--scene needs a file");
-    out_dir = args.text("out", "");
+    out_dir = a.out;
     options.validity = study == "validity";
-    options.verbose = !args.has("quiet");
-    options.tolerance = args.number("tolerance", options.tolerance);
+    options.verbose = !a.quiet;
+    if (given(c, "tolerance")) options.tolerance = a.tolerance;
     if (!(options.tolerance > 0) || !(options.tolerance < 1)) throw std::invalid_argument("--tolerance must be in (0, 1)");
-    options.threads = args.integer("threads", 2);
+    options.threads = given(c, "threads") ? a.threads : 2;
     if (options.threads < 1 || options.threads > 64) throw std::invalid_argument("--threads must be in 1..64");
-    options.bisection_steps = args.integer("bisection-steps", 2);
+    options.bisection_steps = given(c, "bisection-steps") ? a.bisection_steps : 2;
     if (options.bisection_steps < 0 || options.bisection_steps > 20)
       throw std::invalid_argument("--bisection-steps must be in 0..20");
     SceneSpec spec = read_scene_spec(scene);
-    if (args.has("eps")) {
-      spec.eps = parse_number_list("eps", args.text("eps", ""));
+    if (given(c, "eps")) {
+      spec.eps = a.eps.values;
       for (double e : spec.eps)
         if (!(e > 0) || std::isinf(e)) throw std::invalid_argument("--eps: thicknesses must be finite and > 0");
       if (spec.eps.size() < 3) throw std::invalid_argument("--eps: the convergence study needs at least 3 thicknesses");
