@@ -9,6 +9,8 @@
 #include <set>
 #include <unordered_map>
 
+#include <unistd.h>
+
 namespace thinlayer {
 
 namespace {
@@ -333,6 +335,11 @@ void gmsh_new_model(const std::string& name) {
     gmsh::clear();  // drops every model and leaves one empty, unnamed model
     gmsh::model::add(name);
   });
+}
+
+int fork_with_gmsh_lock() {
+  std::lock_guard<std::mutex> lock(gmsh_mutex());
+  return ::fork();  // the child's copy of the mutex is unlocked by the guard's copy
 }
 
 GmshModelScope::GmshModelScope(const std::string& name) : lock_(gmsh_mutex()) {

@@ -21,6 +21,7 @@ namespace {
 
 struct SceneSolveInput {
   std::string scene, mode = "limit", out, vtu;
+  std::size_t max_nodes = SceneSpec{}.max_nodes;
   double eps = 0;
   bool json = false;
   SolverKind solver = SolverKind::Fast;
@@ -29,13 +30,21 @@ struct SceneSolveInput {
 
 // What applies to a scene file's solve; the bar's and the dovetail's options do not.
 const std::set<std::string> scene_solve_options = {"scene", "mode", "eps", "out", "vtu", "json", "verbose",
-                                                   "solver", "tolerance", "max-iterations", "omega"};
+                                                   "solver", "tolerance", "max-iterations", "omega", "max-nodes"};
+
+// --max-nodes N (N >= 1), or the default.
+std::size_t max_nodes(const CLI::App& c, long long given_value) {
+  if (!given(c, "max-nodes")) return SceneSpec{}.max_nodes;
+  if (given_value < 1) throw std::invalid_argument("--max-nodes must be >= 1");
+  return static_cast<std::size_t>(given_value);
+}
 
 SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   require_only(c, scene_solve_options, "a scene file (--scene)");
   SceneSolveInput in;
   in.scene = a.scene;
   if (in.scene.empty()) throw std::invalid_argument("--scene needs a file");
+  in.max_nodes = max_nodes(c, a.max_nodes);
   in.mode = given(c, "mode") ? a.mode : "limit";
   if (in.mode == "layer") {
     if (!given(c, "eps")) throw std::invalid_argument("layer mode needs --eps");
@@ -143,7 +152,9 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     in = parse_solve(command, args);
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
-    bulk = std::make_unique<SceneFileBulk>(read_scene_spec(in.scene));
+    SceneSpec spec = read_scene_spec(in.scene);
+    spec.max_nodes = in.max_nodes;
+    bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     if (in.mode == "layer") check_layer_mode(*bulk, in.eps);
   } catch (const std::invalid_argument& e) {
     return fail("solve", e, 2);
@@ -183,7 +194,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     if (study != "convergence" && study != "validity")
       throw std::invalid_argument("--scene applies to study convergence and study validity only");
     if (!refuse_unless_one_process("study " + study + " --scene")) return 2;
-    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet"};
+    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes"};
     if (study == "validity") allowed.insert("bisection-steps");
     require_only(c, allowed, "study " + study + " --scene");
     const std::string scene = a.scene;
@@ -199,6 +210,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     if (options.bisection_steps < 0 || options.bisection_steps > 20)
       throw std::invalid_argument("--bisection-steps must be in 0..20");
     SceneSpec spec = read_scene_spec(scene);
+    spec.max_nodes = max_nodes(c, a.max_nodes);
     if (given(c, "eps")) {
       spec.eps = a.eps.values;
       for (double e : spec.eps)

@@ -356,8 +356,12 @@ CLI::App* declare_solve(CLI::App& thinlayer, SolveArgs& a) {
                 "a JSON scene naming the physical groups of a gmsh .geo or .msh (README,\n"
                 "\"Your own joint\"; cases/lap_joint/lap_joint.json); with it only --mode,\n"
                 "--eps (mm), --out, --vtu, --json, --solver, --tolerance, --max-iterations,\n"
-                "--omega and --verbose apply")
+                "--omega, --verbose and --max-nodes apply")
       ->type_name("FILE.json")->group("Scene files (your own joint)");
+  c->add_option("--max-nodes", a.max_nodes,
+                "refuse a scene whose mesh would have more nodes than N, before meshing\n"
+                "(estimated from the geometry and mesh_size; default 2000000)")
+      ->type_name("N")->transform(integer("max-nodes"))->group("Scene files (your own joint)");
   c->footer(
       "Numbers are decimal (1e-3, 0.5, inf where a value may be infinite); no hex, no blanks.\n"
       "Exit status: 0 converged, 1 not converged (the result is still written), 2 bad input,\n"

@@ -262,6 +262,10 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
                      "convergence, validity: S2 (and S3) on your own joint, a scene file\n"
                      "(README, \"Your own joint\")")
             ->type_name("FILE.json"));
+  group(c.add_option("--max-nodes", a.max_nodes,
+                     "with --scene: refuse a mesh of more nodes than N, before meshing\n"
+                     "(estimated from the geometry and mesh_size; default 2000000)")
+            ->type_name("N")->transform(integer("max-nodes")));
 }
 
 }  // namespace
@@ -300,14 +304,14 @@ CLI::App* declare_study(CLI::App& thinlayer, StudyArgs& a) {
       "\n"
       "Your own joint: study convergence --scene FILE.json, study validity --scene FILE.json run S2\n"
       "and S3 on a scene file (README, \"Your own joint\"); options --out, --eps LIST (mm), --tolerance\n"
-      "(default 1e-10 there), --threads, --quiet and (validity) --bisection-steps.");
+      "(default 1e-10 there), --threads, --quiet, --max-nodes and (validity) --bisection-steps.");
   c->formatter(help_formatter("usage: thinlayer study NAME [--out DIR] [options]"));
   c->set_help_flag("-h,--help", "this help");
   c->allow_extras();
   c->add_option("name", a.name)->check(one_of("study", study_names))->group("");
   std::set<std::string> all;
   for (const auto& [study, options] : study_options) all.insert(options.begin(), options.end());
-  all.insert({"relaxation-cap", "friction-path", "scene"});
+  all.insert({"relaxation-cap", "friction-path", "scene", "max-nodes"});
   declare_study_options(*c, a, all);
   c->footer("Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input.");
   return c;

@@ -14,6 +14,7 @@ struct StudyArgs {
   NumberList eps, rate_eps, friction_path;
   double tolerance = 0;
   int repeats = 0, relaxation_cap = 0, threads = 0, bisection_steps = 0;
+  long long max_nodes = 0;
   bool quick = false, quiet = false;
 };
 
