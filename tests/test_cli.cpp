@@ -282,7 +282,7 @@ TEST_F(Cli, SingularSceneNamesItsCauseAndExitsNonZero) {
   // Each body's residual and its round-off floor, named (SPEC §1.5).
   const auto residual = h5.read_doubles(g + "/residual_per_body");
   const auto floor = h5.read_doubles(g + "/residual_floor_per_body");
-  EXPECT_EQ(h5.attr_string(g + "/residual_floor_per_body", "bodies"), "bar,layer");
+  EXPECT_EQ(h5.attr_strings(g + "/residual_floor_per_body", "bodies"), (std::vector<std::string>{"bar", "layer"}));
   ASSERT_EQ(floor.size(), residual.size());
   EXPECT_GT(floor[0], 1e-19);  // the bar: u_eps times its forces' magnitudes
   for (double f : floor) {

@@ -62,6 +62,7 @@ class GeoScanner {
   void scan(const fs::path& file, int depth) {
     if (depth > 16) throw InputError(file.string() + ": files included 16 deep (an include loop?)");
     const fs::path canonical = fs::weakly_canonical(fs::absolute(file));
+    read_.insert(canonical.string());
     if (!scanned_.insert(canonical).second) return;
     const std::vector<Token> tokens = tokenize(file);
     for (std::size_t i = 0; i < tokens.size(); ++i) check(file, tokens, i, depth);
@@ -130,10 +131,11 @@ class GeoScanner {
       const fs::path included = checked_path(file, t, i + 1, word);
       if (!is(t, i + 2, ";")) refuse(file, token.line, "'" + word + "' takes one file name in quotes");
       if (word == "Include" || !is_data_file(included)) scan(included, depth + 1);
+      read_.insert(included.string());
     }
     if (word == "ShapeFromFile" || word == "ListFromFile") {
       if (!is(t, i + 1, "(") && !is(t, i + 1, "[")) refuse(file, token.line, "'" + word + "' takes a file name in brackets");
-      checked_path(file, t, i + 2, word);
+      read_.insert(checked_path(file, t, i + 2, word).string());
     }
   }
 
@@ -167,13 +169,18 @@ class GeoScanner {
 
   fs::path folder_;
   std::set<fs::path> scanned_;
+  std::set<std::string> read_;  // every file the geometry reads
+
+ public:
+  const std::set<std::string>& files_read() const { return read_; }
 };
 
 }  // namespace
 
-void scan_geo(const std::string& geo, const std::string& scene_folder) {
+std::vector<std::string> scan_geo(const std::string& geo, const std::string& scene_folder) {
   GeoScanner scanner(scene_folder);
   scanner.scan(geo, 0);
+  return {scanner.files_read().begin(), scanner.files_read().end()};
 }
 
 }  // namespace thinlayer

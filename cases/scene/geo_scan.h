@@ -28,12 +28,15 @@
 // Recombine, Field). A loop can still run long: the meshing child's limits bound it
 // (core/mesh/meshing_child.h).
 #include <string>
+#include <vector>
 
 namespace thinlayer {
 
-// Throws InputError "<file>:<line>: <what the line does> (<why it is refused>)" for the first
-// refused statement of `geo` or of a file it includes; `scene_folder` is the folder every
-// included or merged file must lie in.
-void scan_geo(const std::string& geo, const std::string& scene_folder);
+// Throws InputError "<file>:<line>: '<word>' <what it does>: refused in a scene's geometry" for
+// the first refused statement of `geo` or of a file it includes; `scene_folder` is the folder
+// every included or merged file must lie in. Returns every file the geometry reads (`geo`, the
+// files it includes or merges, the shapes and lists it reads): the run's inputs, which no
+// output may replace (core/io/output_ownership.h).
+std::vector<std::string> scan_geo(const std::string& geo, const std::string& scene_folder);
 
 }  // namespace thinlayer

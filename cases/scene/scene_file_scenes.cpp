@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cases/scene/scene_checks.h"
 #include "core/io/scene_id_number.h"
 
 namespace thinlayer {
@@ -46,6 +47,7 @@ std::string scene_id(const SceneSpec& spec, const std::string& mode, double eps,
 SceneFileBulk::SceneFileBulk(SceneSpec spec) : spec_(std::move(spec)) {
   meshes_ = load_scene_meshes(spec_);
   S_ = check_scene_meshes(spec_, meshes_);
+  check_scene_mesh_data(spec_, meshes_);  // shared cells, supports on S or in conflict, inverted cells (scene_checks.h)
   if (spec_.has_layer() && spec_.element == ElementType::Q1) thickest_ = scene_thickest_layer(spec_, meshes_, S_);
   model_ = make_scene_limit_model(spec_, meshes_);
   system_ = std::make_unique<LinearSystem>(model_);

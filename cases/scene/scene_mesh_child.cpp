@@ -40,6 +40,16 @@ void refuse_overgrown(const SceneSpec& spec, const SceneMeshes& meshes) {
 
 }  // namespace
 
+std::vector<InputFile> scene_inputs(const SceneSpec& spec) {
+  std::vector<InputFile> inputs = {{spec.file, "the scene file"}};
+  if (!spec.mesh.empty()) inputs.push_back({spec.mesh, "its mesh"});
+  if (!spec.geometry.empty()) {
+    inputs.push_back({spec.geometry, "its geometry"});
+    for (const std::string& file : scan_geo(spec.geometry, spec.folder)) inputs.push_back({file, "a file its geometry reads"});
+  }
+  return inputs;
+}
+
 SceneMeshes mesh_scene_in_child(const SceneSpec& spec, const std::function<SceneMeshes(const SceneSpec&)>& mesh) {
   if (!spec.geometry.empty()) scan_geo(spec.geometry, spec.folder);
   const std::string file = spec.geometry.empty() ? spec.mesh : spec.geometry;

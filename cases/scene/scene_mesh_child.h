@@ -8,8 +8,13 @@
 #include <functional>
 
 #include "cases/scene/scene_mesh.h"
+#include "core/io/output_ownership.h"
 
 namespace thinlayer {
+
+// The files a scene run reads: the scene file, its geometry or mesh, and what the geometry
+// includes or merges (geo_scan.h). No output may replace them.
+std::vector<InputFile> scene_inputs(const SceneSpec& spec);
 
 // `mesh` runs in the child; it meshes `spec` with gmsh in-process (scene_mesh.cpp).
 SceneMeshes mesh_scene_in_child(const SceneSpec& spec, const std::function<SceneMeshes(const SceneSpec&)>& mesh);

@@ -118,6 +118,7 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
 [[noreturn]] void run_child(int pipe_write, const std::function<std::string()>& work, const MeshingChildLimits& limits,
                             pid_t parent) {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  ::prctl(PR_SET_DUMPABLE, 0);  // no core dump, not even to a core_pattern pipe
   if (::getppid() != parent) ::_exit(71);  // the parent died before the line above
   for (int s : {SIGINT, SIGTERM, SIGPIPE}) ::signal(s, SIG_DFL);  // not the parent's cleanup handler
   const int null = ::open("/dev/null", O_RDWR);

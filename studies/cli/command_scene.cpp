@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cases/scene/scene_mesh_child.h"
+#include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 #include "core/io/vtu_writer.h"
 #include "studies/tools/format.h"
@@ -21,6 +23,7 @@ namespace {
 
 struct SceneSolveInput {
   std::string scene, mode = "limit", out, vtu;
+  bool force = false;
   std::size_t max_nodes = SceneSpec{}.max_nodes;
   double eps = 0;
   bool json = false;
@@ -30,7 +33,7 @@ struct SceneSolveInput {
 
 // What applies to a scene file's solve; the bar's and the dovetail's options do not.
 const std::set<std::string> scene_solve_options = {"scene", "mode", "eps", "out", "vtu", "json", "verbose",
-                                                   "solver", "tolerance", "max-iterations", "omega", "max-nodes"};
+                                                   "solver", "tolerance", "max-iterations", "omega", "max-nodes", "force"};
 
 // --max-nodes N (N >= 1), or the default.
 std::size_t max_nodes(const CLI::App& c, long long given_value) {
@@ -59,6 +62,7 @@ SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   in.json = a.json;
   in.out = a.out;
   in.vtu = a.vtu;
+  in.force = a.force;
   auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
   if (!in.out.empty() && !in.vtu.empty() && target(in.out) == target(in.vtu))
     throw std::invalid_argument("--out and --vtu name the same file");
@@ -130,12 +134,6 @@ void print_scene(const SceneFileBulk& bulk, const SceneSolveInput& in, const Sce
   std::printf("\n");
 }
 
-void write_results(const std::string& path, const SceneRecord& record) {
-  auto out = open_results_file(path);
-  write_scene(*out, record);
-  write_checks(*out, {});
-  out->commit();
-}
 
 // One line on stderr, the exit status of its kind.
 int fail(const std::string& command, const std::exception& e, int status) {
@@ -147,13 +145,19 @@ int fail(const std::string& command, const std::exception& e, int status) {
 
 int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   SceneSolveInput in;
+  std::vector<InputFile> inputs;
   std::unique_ptr<SceneFileBulk> bulk;
   try {
     in = parse_solve(command, args);
-    if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
-    if (!in.vtu.empty()) check_vtu_target(in.vtu);
     SceneSpec spec = read_scene_spec(in.scene);
     spec.max_nodes = in.max_nodes;
+    // The outputs first: never one of the run's inputs, never a file thinlayer did not write
+    // (unless --force), and writable; all before any work.
+    inputs = scene_inputs(spec);
+    if (!in.out.empty()) check_replaceable(in.out, OutputKind::Results, inputs, in.force);
+    if (!in.vtu.empty()) check_replaceable(in.vtu, OutputKind::Vtu, inputs, in.force);
+    if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
+    if (!in.vtu.empty()) check_vtu_target(in.vtu);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     if (in.mode == "layer") check_layer_mode(*bulk, in.eps);
   } catch (const std::invalid_argument& e) {
@@ -167,7 +171,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options)
                                                 : solve_scene_file_layer(*bulk, in.eps, in.solver, in.options);
     if (!in.json) print_scene(*bulk, in, s);
-    if (!in.out.empty()) write_results(in.out, s.record);
+    if (!in.out.empty()) write_scene_file(in.out, s.record, {inputs, in.force});
     if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
@@ -188,13 +192,14 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
 
 int command_study_scene(const std::string& study, const CLI::App& c, const StudyArgs& a) {
   SceneStudyOptions options;
+  OutputRules rules;
   std::string out_dir;
   std::unique_ptr<SceneFileBulk> bulk;
   try {
     if (study != "convergence" && study != "validity")
       throw std::invalid_argument("--scene applies to study convergence and study validity only");
     if (!refuse_unless_one_process("study " + study + " --scene")) return 2;
-    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes"};
+    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes", "force"};
     if (study == "validity") allowed.insert("bisection-steps");
     require_only(c, allowed, "study " + study + " --scene");
     const std::string scene = a.scene;
@@ -211,6 +216,8 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
       throw std::invalid_argument("--bisection-steps must be in 0..20");
     SceneSpec spec = read_scene_spec(scene);
     spec.max_nodes = max_nodes(c, a.max_nodes);
+    rules = {scene_inputs(spec), a.force};
+    if (!out_dir.empty()) check_replaceable(out_dir + "/results.h5", OutputKind::Results, rules.inputs, rules.force);
     if (given(c, "eps")) {
       spec.eps = a.eps.values;
       for (double e : spec.eps)
@@ -225,7 +232,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     return fail("study", e, 2);
   }
   try {
-    auto out = open_results(out_dir);
+    auto out = open_results(out_dir, rules);
     if (out_dir.empty()) std::printf("(no --out DIR: the results are printed, not saved)\n");
     const SceneStudyResult r = run_scene_study(*bulk, options, out.get());
     int failed = 0;

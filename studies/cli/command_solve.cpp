@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 #include "core/io/reference_tables.h"
 #include "core/io/vtu_writer.h"
@@ -39,7 +40,7 @@ double thickest_layer(const std::string& case_name) { return case_name == "bar" 
 
 struct SolveInput {
   std::string case_name, mode, law_case, out, vtu;
-  bool json = false;
+  bool json = false, force = false;
   SolverKind solver = SolverKind::Fast;
   SolverOptions options;
   double eps = 0;
@@ -122,6 +123,7 @@ SolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   in.json = a.json;
   in.out = a.out;
   in.vtu = a.vtu;
+  in.force = a.force;
   // absolute() first: weakly_canonical leaves a relative path with no existing prefix as it is.
   auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
   if (!in.out.empty() && !in.vtu.empty() && target(in.out) == target(in.vtu))
@@ -266,13 +268,6 @@ std::string summary_line(const SolveInput& in, const SceneRecord& record, const 
   return j.dump();
 }
 
-// The scene as a results file (SPEC §4): layout, environment, the scene, /checks (empty).
-void write_results(const std::string& path, const SceneRecord& record) {
-  auto out = open_results_file(path);
-  write_scene(*out, record);
-  write_checks(*out, {});
-  out->commit();
-}
 
 }  // namespace
 
@@ -310,6 +305,9 @@ CLI::App* declare_solve(CLI::App& thinlayer, SolveArgs& a) {
               "print one line of JSON on stdout instead of the text: counts,\n"
               "residual, stop cause, iterations, times (for scripts)");
   c->add_flag("--verbose", a.verbose, "the solver's progress lines on stderr");
+  c->add_flag("--force", a.force,
+              "replace an existing --out or --vtu file that thinlayer did not write (never\n"
+              "an input of the run: the scene file, its geometry or mesh)");
 
   const std::string bar = "Bar";
   c->add_option("--row", a.row, "Table 3 row 1..6: (lambda_bar, mu_bar) from reference/table3_paper.csv")
@@ -356,7 +354,7 @@ CLI::App* declare_solve(CLI::App& thinlayer, SolveArgs& a) {
                 "a JSON scene naming the physical groups of a gmsh .geo or .msh (README,\n"
                 "\"Your own joint\"; cases/lap_joint/lap_joint.json); with it only --mode,\n"
                 "--eps (mm), --out, --vtu, --json, --solver, --tolerance, --max-iterations,\n"
-                "--omega, --verbose and --max-nodes apply")
+                "--omega, --verbose, --force and --max-nodes apply")
       ->type_name("FILE.json")->group("Scene files (your own joint)");
   c->add_option("--max-nodes", a.max_nodes,
                 "refuse a scene whose mesh would have more nodes than N, before meshing\n"
@@ -381,11 +379,13 @@ int command_solve(const CLI::App& command, const SolveArgs& args) {
   text_out = in.json ? nullptr : stdout;
   try {
     // Check the outputs first: an unwritable path is bad input, found before any work.
+    if (!in.out.empty()) check_replaceable(in.out, OutputKind::Results, {}, in.force);
+    if (!in.vtu.empty()) check_replaceable(in.vtu, OutputKind::Vtu, {}, in.force);
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
     const auto [record, report] = solve_scene(in);
     if (!in.out.empty()) {
-      write_results(in.out, record);
+      write_scene_file(in.out, record, {{}, in.force});
       say("  wrote %s\n", in.out.c_str());
     }
     if (!in.vtu.empty()) {

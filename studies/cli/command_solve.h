@@ -18,7 +18,7 @@ struct SolveArgs {
   int row = 0, nx = 0, ny = 0, layer_elements = 0, max_iterations = 0;
   long long max_nodes = 0;
   NumberList friction_path;
-  bool json = false, verbose = false;
+  bool json = false, verbose = false, force = false;
 };
 
 // Declares the subcommand `solve` of `thinlayer`, its options bound to `args`.

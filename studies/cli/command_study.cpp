@@ -43,6 +43,7 @@ namespace {
 
 struct StudyInput {
   std::string out_dir;
+  bool force = false;
   Table3StudyOptions table3;
   DovetailStudyOptions dovetail;
   ConvergenceStudyOptions convergence;
@@ -59,16 +60,16 @@ struct StudyInput {
 
 // The options each study reads; any other is refused rather than silently ignored.
 const std::map<std::string, std::set<std::string>> study_options = {
-    {"table3", {"out", "quiet", "repeats", "quick"}},
-    {"dovetail", {"out", "quiet", "cases", "eps", "relaxation-cap", "friction-path"}},
-    {"convergence", {"out", "quiet", "quick", "cases", "eps", "rate-eps", "tolerance", "threads"}},
-    {"validity", {"out", "quiet", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
-    {"thresholds", {"out", "quiet"}},
-    {"asymptotics", {"out", "quiet", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
-    {"timing", {"out", "quiet", "repeats", "quick"}},
-    {"stress", {"out", "quiet", "quick"}},
+    {"table3", {"out", "quiet", "force", "repeats", "quick"}},
+    {"dovetail", {"out", "quiet", "force", "cases", "eps", "relaxation-cap", "friction-path"}},
+    {"convergence", {"out", "quiet", "force", "quick", "cases", "eps", "rate-eps", "tolerance", "threads"}},
+    {"validity", {"out", "quiet", "force", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
+    {"thresholds", {"out", "quiet", "force"}},
+    {"asymptotics", {"out", "quiet", "force", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
+    {"timing", {"out", "quiet", "force", "repeats", "quick"}},
+    {"stress", {"out", "quiet", "force", "quick"}},
     // verify runs table3, asymptotics, the quick timing and stress.
-    {"verify", {"out", "quiet", "repeats", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
+    {"verify", {"out", "quiet", "force", "repeats", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
 };
 
 // The dovetail's thickest thin layer (its layer meshes stop there; SPEC §4: a layer thicker
@@ -80,6 +81,7 @@ StudyInput parse(const CLI::App& c, const StudyArgs& a, const std::string& name)
   const bool require_out = name == "verify";
   StudyInput in;
   in.out_dir = a.out;
+  in.force = a.force;
   if (require_out && in.out_dir.empty()) throw std::invalid_argument("--out DIR is required");
   in.table3.repeats = given(c, "repeats") ? a.repeats : 3;
   if (in.table3.repeats < 1) throw std::invalid_argument("--repeats must be >= 1");
@@ -235,6 +237,7 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
                    "the slowest contrast; timing: bar levels 32-128, peers at 32 and 64,\n"
                    "dovetail h 0.05 and 0.025, layer eps 1e-4"));
   group(c.add_flag("--quiet", a.quiet, "no progress lines on stderr"));
+  group(c.add_flag("--force", a.force, "replace DIR's files that thinlayer did not write (results.h5, summary.json)"));
   group(c.add_option("--cases", a.cases, "dovetail studies: the cases to run, each once (default abcdefghi)")->type_name("LETTERS"));
   group(c.add_option("--eps", a.eps,
                      "dovetail studies: comma-separated thicknesses, each in (0, 0.1]\n"
@@ -356,7 +359,7 @@ int command_study(const CLI::App& command, const StudyArgs& a) {
   }
   try {
     const auto start = std::chrono::steady_clock::now();
-    auto out = open_results_on_root(in.out_dir);
+    auto out = open_results_on_root(in.out_dir, {{}, in.force});
     if (in.out_dir.empty()) std::printf("(no --out DIR: the results are printed, not saved)\n");
     std::vector<Check> checks;
     if (name == "table3") checks = run_table3_study(in.table3, out.get());
@@ -392,7 +395,9 @@ int command_verify(const CLI::App& command, const StudyArgs& a) {
     return 2;
   }
   try {
-    auto out = open_results(in.out_dir);
+    auto out = open_results(in.out_dir, {{}, in.force});
+    const std::string summary = in.out_dir + "/summary.json";
+    check_replaceable(summary, OutputKind::Summary, {}, in.force);  // before the studies, not after
     std::map<std::string, double> timings;
     std::vector<Check> checks;
     auto timed = [&](const std::string& name, const std::function<std::vector<Check>()>& study) {
@@ -414,7 +419,6 @@ int command_verify(const CLI::App& command, const StudyArgs& a) {
     timed("lap_joint", [&] { return run_lap_joint_study(in.verbose, out.get()); });
     write_checks(*out, checks);
     out->commit();
-    const std::string summary = in.out_dir + "/summary.json";
     write_text_atomically(summary, summary_json(checks, timings));
     std::cerr << "[verify] report\n";
     const std::string report_dir = in.out_dir + "/report";

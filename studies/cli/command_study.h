@@ -15,7 +15,7 @@ struct StudyArgs {
   double tolerance = 0;
   int repeats = 0, relaxation_cap = 0, threads = 0, bisection_steps = 0;
   long long max_nodes = 0;
-  bool quick = false, quiet = false;
+  bool quick = false, quiet = false, force = false;
 };
 
 // Declare the subcommands `study` (with its positional NAME) and `verify` of `thinlayer`.

@@ -6,6 +6,14 @@
 
 namespace thinlayer {
 
+namespace {
+
+// daN/mm²: the largest traction a solve takes; its squares, summed over a mesh, stay far from
+// the largest double (1.8e308). Measured on the bar: 1e150 solves, 1e155 ends in NaN.
+constexpr double largest_traction = 1e100;
+
+}  // namespace
+
 void declare_bar_mesh_options(CLI::App& command, SolveArgs& a) {
   const std::string group = "Bar";
   command.add_option("--nx", a.nx, "elements along AD (default 32)")->type_name("N")->transform(integer("nx"))->group(group);
@@ -48,6 +56,15 @@ bar::MeshOptions parse_bar_mesh(const CLI::App& command, const SolveArgs& a) {
   if (!(m.distortion >= 0 && m.distortion < 0.5)) throw std::invalid_argument("--distortion must be in [0, 0.5)");
   if (given(command, "load-scale")) m.load_scale = a.load_scale;
   if (!std::isfinite(m.load_scale)) throw std::invalid_argument("--load-scale must be finite");
+  // The solver squares forces (norms, the round-off floor): a traction of 1e155 daN/mm^2 on
+  // the bar overflowed them to NaN after the whole solve. Said up front, with room to spare.
+  const double largest_F = std::max(std::abs(bar::F1), std::abs(bar::F2));
+  if (std::abs(m.load_scale) * largest_F > largest_traction) {
+    std::ostringstream why;
+    why << "--load-scale " << m.load_scale << ": the tractions, " << m.load_scale << " x " << largest_F
+        << " daN/mm^2, overflow the solve (it squares forces): at most " << largest_traction << " daN/mm^2";
+    throw std::invalid_argument(why.str());
+  }
   if (given(command, "plane")) m.plane = a.plane == "strain" ? PlaneHypothesis::Strain : PlaneHypothesis::Stress;
   return m;
 }
