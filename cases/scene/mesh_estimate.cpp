@@ -168,7 +168,7 @@ void refuse_oversized_mesh(const SceneSpec& spec) {
     std::ostringstream s;
     s.precision(2);
     s << spec.geometry_where << ": the mesh would have about " << nodes << " nodes, above the limit of "
-      << static_cast<double>(spec.max_nodes) << " (--max-nodes): "
+      << spec.max_nodes << " (--max-nodes): "
       << (spec.geometry.empty() ? "give a coarser mesh" : spec.h_interface ? "raise mesh_size" : "raise the .geo's sizes")
       << " or the limit";
     throw InputError(s.str());

@@ -101,6 +101,7 @@ SolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   SolveInput in;
   in.case_name = a.case_name;
   if (!given(c, "case")) throw std::invalid_argument("--case is required (bar or dovetail)");
+  if (given(c, "max-nodes")) throw std::invalid_argument("--max-nodes applies to a scene file (--scene) only");
   for (const auto& name : in.case_name == "bar" ? dovetail_only : bar_only)
     if (given(c, name)) throw std::invalid_argument("--" + name + " does not apply to the " + in.case_name);
   in.mode = given(c, "mode") ? a.mode : "limit";
