@@ -24,6 +24,8 @@ import time
 import h5py
 import numpy as np
 
+from process_session import run_in_session
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 MAKE_REPORT = os.path.join(HERE, "..", "report", "make_report.py")
 CHEAP = "--case bar --row 1 --nx 8 --ny 8"  # a limit-mode bar that solves in milliseconds
@@ -70,33 +72,13 @@ def user_folder():
     return folder
 
 
-def session_processes(session):
-    """The processes still alive in a session (a run's children, if any survived it)."""
-    alive = []
-    for pid in os.listdir("/proc"):
-        if not pid.isdigit():
-            continue
-        try:
-            with open(f"/proc/{pid}/stat") as f:
-                fields = f.read().rsplit(")", 1)[1].split()
-        except OSError:
-            continue
-        if int(fields[3]) == session and fields[0] != "Z":
-            alive.append(int(pid))
-    return alive
-
-
 survivors = []  # processes a run left behind, per case (checked by refused())
 
 
 def run(argv, folder, timeout=120):
     """The run in its own session, so that whatever it started can be found after it."""
-    p = subprocess.Popen(argv, cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                         start_new_session=True)
-    out, err = p.communicate(timeout=timeout)
-    time.sleep(0.02)
-    survivors[:] = session_processes(p.pid)
-    return subprocess.CompletedProcess(argv, p.returncode, out, err)
+    r, survivors[:] = run_in_session(argv, folder, timeout)
+    return r
 
 
 def check(name, condition, detail=""):

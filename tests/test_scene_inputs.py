@@ -25,6 +25,8 @@ import time
 
 import h5py
 
+from process_session import run_in_session, session_processes
+
 THINLAYER = os.path.abspath(sys.argv[1])
 LAP = os.path.abspath(sys.argv[2])
 failures = []
@@ -81,32 +83,12 @@ def check(name, ok, detail=""):
         failures.append(f"{name}: {detail}")
 
 
-def session_processes(session):
-    """The processes still alive in a session (thinlayer's children, if any survived it)."""
-    alive = []
-    for pid in os.listdir("/proc"):
-        if not pid.isdigit():
-            continue
-        try:
-            with open(f"/proc/{pid}/stat") as f:
-                fields = f.read().rsplit(")", 1)[1].split()
-        except OSError:
-            continue
-        if int(fields[3]) == session and fields[0] != "Z":
-            alive.append(int(pid))
-    return alive
-
-
 OUTSIDE = tempfile.mkdtemp(prefix="thinlayer-outside-")  # where a hostile .geo aims its writes
 
 
 def run(args, folder, timeout=120):
     """thinlayer in its own session; returns the completed process and the session's survivors."""
-    p = subprocess.Popen([THINLAYER, *args], cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                         start_new_session=True)
-    out, err = p.communicate(timeout=timeout)
-    time.sleep(0.05)
-    return subprocess.CompletedProcess(p.args, p.returncode, out, err), session_processes(p.pid)
+    return run_in_session([THINLAYER, *args], folder, timeout)
 
 
 def refused(name, args, expect_in_message, folder, max_seconds=None):

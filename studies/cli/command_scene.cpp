@@ -21,14 +21,10 @@ namespace thinlayer {
 
 namespace {
 
-struct SceneSolveInput {
-  std::string scene, mode = "limit", out, vtu;
-  bool force = false;
+struct SceneSolveInput : SolveRun {
+  std::string scene, mode = "limit";
   std::size_t max_nodes = SceneSpec{}.max_nodes;
   double eps = 0;
-  bool json = false;
-  SolverKind solver = SolverKind::Fast;
-  SolverOptions options;
 };
 
 // What applies to a scene file's solve; the bar's and the dovetail's options do not.
@@ -56,16 +52,7 @@ SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   } else if (given(c, "eps")) {
     throw std::invalid_argument("--eps applies to the layer mode only");
   }
-  in.solver = parse_solver(given(c, "solver") ? a.solver : "fast");
-  in.options = parse_solver_options(c, a);
-  in.options.verbose = a.verbose;
-  in.json = a.json;
-  in.out = a.out;
-  in.vtu = a.vtu;
-  in.force = a.force;
-  auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
-  if (!in.out.empty() && !in.vtu.empty() && target(in.out) == target(in.vtu))
-    throw std::invalid_argument("--out and --vtu name the same file");
+  parse_solve_run(c, a, in);
   return in;
 }
 

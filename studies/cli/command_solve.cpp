@@ -38,11 +38,8 @@ const std::set<std::string> dovetail_only = {"law-case", "gamma", "delta", "h-in
 // the layer is no thin layer, and its band would cross the adherents' elements.
 double thickest_layer(const std::string& case_name) { return case_name == "bar" ? bar::side / 10 : 0.1; }
 
-struct SolveInput {
-  std::string case_name, mode, law_case, out, vtu;
-  bool json = false, force = false;
-  SolverKind solver = SolverKind::Fast;
-  SolverOptions options;
+struct SolveInput : SolveRun {
+  std::string case_name, mode, law_case;
   double eps = 0;
   int layer_elements = 2;
   // bar
@@ -118,17 +115,7 @@ SolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   }
   if (given(c, "layer-elements")) in.layer_elements = a.layer_elements;
   if (in.layer_elements < 2) throw std::invalid_argument("--layer-elements must be >= 2");
-  in.solver = parse_solver(given(c, "solver") ? a.solver : "fast");
-  in.options = parse_solver_options(c, a);
-  in.options.verbose = a.verbose;
-  in.json = a.json;
-  in.out = a.out;
-  in.vtu = a.vtu;
-  in.force = a.force;
-  // absolute() first: weakly_canonical leaves a relative path with no existing prefix as it is.
-  auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
-  if (!in.out.empty() && !in.vtu.empty() && target(in.out) == target(in.vtu))
-    throw std::invalid_argument("--out and --vtu name the same file");
+  parse_solve_run(c, a, in);
   if (in.case_name == "bar") parse_bar(c, a, in);
   else parse_dovetail(c, a, in);
   if (given(c, "friction-path")) {

@@ -1,6 +1,7 @@
 #include "studies/cli/options.h"
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -41,6 +42,20 @@ void declare_solver_options(CLI::App& command, SolveArgs& a) {
       ->type_name("N")->transform(integer("max-iterations"))->group(group);
   command.add_option("--omega", a.omega, "relaxation's over-relaxation coefficient in (0, 2) (default 1.8)")
       ->type_name("W")->check(decimal("omega"))->group(group);
+}
+
+void parse_solve_run(const CLI::App& command, const SolveArgs& a, SolveRun& run) {
+  run.solver = parse_solver(given(command, "solver") ? a.solver : "fast");
+  run.options = parse_solver_options(command, a);
+  run.options.verbose = a.verbose;
+  run.json = a.json;
+  run.out = a.out;
+  run.vtu = a.vtu;
+  run.force = a.force;
+  // absolute() first: weakly_canonical leaves a relative path with no existing prefix as it is.
+  auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
+  if (!run.out.empty() && !run.vtu.empty() && target(run.out) == target(run.vtu))
+    throw std::invalid_argument("--out and --vtu name the same file");
 }
 
 bar::MeshOptions parse_bar_mesh(const CLI::App& command, const SolveArgs& a) {

@@ -7,6 +7,7 @@
 
 #include "cases/bar/bar.h"
 #include "core/solvers/solve_report.h"
+#include "core/solvers/solver_choice.h"
 #include "studies/cli/command_solve.h"
 
 namespace thinlayer {
@@ -18,6 +19,16 @@ void declare_solver_options(CLI::App& command, SolveArgs& args);
 
 inline const std::set<std::string> bar_mesh_options = {"nx", "ny", "element", "diagonal", "plane", "distortion", "load-scale"};
 inline const std::set<std::string> solver_options = {"tolerance", "max-iterations", "omega"};
+
+// What every solve reads besides its scene: the solver, where the results go, how they print.
+struct SolveRun {
+  SolverKind solver = SolverKind::Fast;
+  SolverOptions options;
+  std::string out, vtu;
+  bool json = false, force = false;
+};
+// --solver, the solver options, --verbose, --out, --vtu (not the same file), --json, --force.
+void parse_solve_run(const CLI::App& command, const SolveArgs& args, SolveRun& run);
 
 bar::MeshOptions parse_bar_mesh(const CLI::App& command, const SolveArgs& args);
 SolverOptions parse_solver_options(const CLI::App& command, const SolveArgs& args);
