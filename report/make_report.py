@@ -35,6 +35,7 @@ import section_controls  # noqa: E402
 import section_convergence  # noqa: E402
 import section_convergence_rates  # noqa: E402
 import section_header  # noqa: E402
+import section_joint  # noqa: E402
 import section_layer_stiffness  # noqa: E402
 import section_scene_files  # noqa: E402
 import section_table3  # noqa: E402
@@ -77,6 +78,18 @@ SECTIONS = (
 # Rendered by a second process, beside the others (parallel_sections.py): the slowest section.
 IN_HELPER = {"convergence"}
 
+# A file whose only study is a scene-file study (`study validity --scene`) gets the report of that
+# joint instead of the verification report's empty sections (SPEC §5).
+JOINT_SECTIONS = (
+    ("summary", "Summary", section_header.render),
+    ("joint", "The joint", section_joint.render),
+)
+
+
+def is_joint_file(f):
+    studies = f.get("studies")
+    return studies is not None and set(studies.keys()) == {"scene"}
+
 
 class SectionError(Exception):
     """A section could not be built from the file (a malformed or incomplete group)."""
@@ -95,24 +108,28 @@ def write_report(f, results_path, out_dir):
     ctx = build("reading /scenes and /checks",
                 lambda: Context(path=results_path, f=f, scenes=index_scenes(f), checks=load_checks(f),
                                 figures=FigureWriter(out_dir)))
+    joint = is_joint_file(f)
+    sections = JOINT_SECTIONS if joint else SECTIONS
     helper, answer = parallel_sections.start(
-        results_path, out_dir, [(label, render) for anchor, label, render in SECTIONS if anchor in IN_HELPER])
+        results_path, out_dir, [(label, render) for anchor, label, render in sections if anchor in IN_HELPER])
     try:
         mine = {anchor: build(f"section '{label}'", lambda: render(ctx))
-                for anchor, label, render in SECTIONS if anchor not in IN_HELPER}
+                for anchor, label, render in sections if anchor not in IN_HELPER}
         helper_parts, error = parallel_sections.finish(helper, answer)
     finally:
         parallel_sections.stop(helper)
     if error:
         raise SectionError(f"section '{error[0]}': {error[1]}")
-    from_helper = dict(zip([anchor for anchor, _, _ in SECTIONS if anchor in IN_HELPER], helper_parts))
-    parts = [mine[anchor] if anchor in mine else from_helper[anchor] for anchor, _, _ in SECTIONS]
-    html = page("thinlayer verification report", [(a, label) for a, label, _ in SECTIONS], "\n".join(parts))
+    from_helper = dict(zip([anchor for anchor, _, _ in sections if anchor in IN_HELPER], helper_parts))
+    parts = [mine[anchor] if anchor in mine else from_helper[anchor] for anchor, _, _ in sections]
+    title = f"{JOINT_TITLE}: {', '.join(sorted(f['studies']['scene']))}" if joint else TITLE
+    html = page(title, [(a, label) for a, label, _ in sections], "\n".join(parts))
     with open(os.path.join(out_dir, "index.html"), "w", encoding="utf-8") as out:
         out.write(html)
 
 
 TITLE = "thinlayer verification report"
+JOINT_TITLE = "thinlayer joint report"
 
 
 def previous_figures(index_path):
@@ -127,7 +144,7 @@ def previous_figures(index_path):
     except (OSError, UnicodeDecodeError) as e:
         raise ReportError(f"{index_path}: exists and is not a report this script wrote ({e}); "
                           f"move it or choose another folder") from None
-    if f"<title>{TITLE}</title>" not in html:
+    if f"<title>{TITLE}</title>" not in html and not re.search(f"<title>{JOINT_TITLE}: [^<]*</title>", html):
         raise ReportError(f"{index_path}: exists and is not a report this script wrote; "
                           f"move it or choose another folder")
     return set(re.findall(r'<img src="figures/([^"/]+\.png)"', html))

@@ -49,7 +49,8 @@ def scene_block(ctx, s, name):
                "Relative discrete L² distances of the adherents' displacements, of the jumps across the layer and of "
                "the stresses on the plus face; <i>diff</i>: nodes of S whose combined status differs from the limit's. "
                "Rates p of e ≈ C ε^p (plain) and e ≈ e_∞ + C ε^p (floored: the floor is the misfit at the ends of "
-               "the bondline, which shrinks with the element size, not with ε)."
+               "the bondline, which shrinks with the element size, not with ε); p (Cauchy): from the layer model's own "
+               "differences between neighbouring ε, d_k ≈ C ε_k^p (1 − (ε_k+1/ε_k)^p), where the floor cancels."
                + (f" The asymptotics predict p = {num(predicted)} for these exponents (studies/convergence_rates.md)."
                   if predicted is not None and predicted >= 0 else ""))]
     header = ["ε (mm)"] + [LABELS[q] for q in QUANTITIES] + ["diff", "converged"]
@@ -64,6 +65,10 @@ def scene_block(ctx, s, name):
                                    for q in QUANTITIES] + ["", ""])
     rows.append(["e_∞"] + [f"{attr(s, 'floor_' + q, 0):.2e}" if attr(s, "fitted_floor_" + q) else "n/a"
                            for q in QUANTITIES] + ["", ""])
+    if "cauchy" in s:  # the layer model's own differences along ε: the floor cancels
+        c = s["cauchy"]
+        rows.append(["p (Cauchy)"] + [rate_text(attr(c, "p_" + q), attr(c, "p_" + q + "_stderr", 0), attr(c, "fitted_" + q))
+                                      for q in QUANTITIES] + ["", ""])
     out.append(table(header, rows))
     out.append(scene_figure(ctx, s, name, eps))
     if "validity" in s:

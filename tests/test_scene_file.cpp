@@ -17,6 +17,8 @@
 #include "cases/scene/scene_spec.h"
 #include "cases/scene/scene_file_scenes.h"
 #include "core/mesh/gmsh_session.h"
+#include "tests/scene_folder.h"
+#include "tests/uniform_bondline.h"
 
 namespace fs = std::filesystem;
 using namespace thinlayer;
@@ -41,50 +43,13 @@ std::string spec_error(const std::string& text) {
   return "(no error)";
 }
 
-// A temporary folder removed at the end of the test.
-struct Folder {
-  fs::path path;
-  Folder() {
-    path = fs::temp_directory_path() / ("thinlayer-scene-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(path);
-  }
-  ~Folder() { fs::remove_all(path); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return (path / name).string();
-  }
-};
-
-std::string num(double x) {
-  char s[40];
-  std::snprintf(s, sizeof s, "%.17g", x);
-  return s;
-}
+using Folder = SceneFolder;
+std::string num(double x) { return full_digits(x); }
 
 // The closed form's data. Plane strain, mm and daN.
-struct ClosedForm {
-  double W = 10, H = 10, y0 = 3, y1 = 7;  // bondline from (0, y0) to (W, y1)
-  double lambda = 4500, mu = 5400;        // both bodies
-  double lambda_g = 2000, mu_g = 1000;    // glue; limit law (d): λ̄ = λ_g, μ̄ = μ_g (γ = δ = 1)
-  double e = -1e-3, a = 2e-4;             // u = (a y, e y) + c: ε_xx = 0, ε_yy = e, 2ε_xy = a
-  double s() const { return (y1 - y0) / std::hypot(W, y1 - y0); }
-  double c() const { return W / std::hypot(W, y1 - y0); }
-  Eigen::Vector2d n() const { return {-s(), c()}; }  // from the lower (minus) body into the upper (plus)
-  Eigen::Vector2d t() const { return {c(), s()}; }   // n turned clockwise
-  Eigen::Matrix2d sigma() const {
-    Eigen::Matrix2d S;
-    S << lambda * e, mu * a, mu * a, (lambda + 2 * mu) * e;
-    return S;
-  }
-  double sigma_N() const { return n().dot(sigma() * n()); }
-  // The minus side pushes the plus body with −σ_N n + σ_T t = σ(−n), the traction on its face.
-  double sigma_T() const { return -t().dot(sigma() * n()); }
-  double K_N() const { return lambda_g + 2 * mu_g; }
-  double K_T() const { return mu_g; }
-  double jump_N() const { return -sigma_N() / K_N(); }  // [u]_N > 0: interpenetration under compression
-  double jump_T() const { return -sigma_T() / K_T(); }
-  Eigen::Vector2d Delta() const { return -jump_N() * n() + jump_T() * t(); }  // u⁺ − u⁻
+struct ClosedForm : UniformBondline {
+  double W = 10, H = 10, y0 = 3, y1 = 7;  // bondline from (0, y0) to (W, y1): direction (W, y1 − y0)
+  std::string faces;                      // "" (contact, the paper's), or a "faces" member of the interface
   Eigen::Vector2d top_u() const { return Eigen::Vector2d(a * H, e * H) + Delta(); }
 
   std::string geo() const {
@@ -112,7 +77,8 @@ struct ClosedForm {
     return "{\"name\": \"closed-form\", \"geometry\": \"cf.geo\", \"mesh_size\": {\"interface\": 1, \"far\": 2},\n"
            " \"bodies\": {\"lower\": {\"group\": \"lower\", \"lambda\": " + num(lambda) + ", \"mu\": " + num(mu) + "},\n"
            "            \"upper\": {\"group\": \"upper\", \"lambda\": " + num(lambda) + ", \"mu\": " + num(mu) + "}},\n"
-           " \"interface\": {\"group\": \"bond\", \"plus\": \"upper\", \"minus\": \"lower\", \"friction\": 1,\n"
+           " \"interface\": {\"group\": \"bond\", \"plus\": \"upper\", \"minus\": \"lower\", \"friction\": 1,\n" +
+           (faces.empty() ? "" : "   \"faces\": " + faces + ",\n") +
            "   \"layer\": {\"gamma\": 1, \"delta\": 1, \"lambda_g\": " + num(lambda_g) + ", \"mu_g\": " + num(mu_g) + "}},\n"
            " \"supports\": " + supports + "],\n \"loads\": " + loads + "]}\n";
   }
@@ -122,7 +88,7 @@ struct ClosedForm {
 // so across the layer in layer mode) from the closed form, relative to |[u]|.
 double jump_error(const SceneFileBulk& bulk, const SceneRecord& r, const ClosedForm& cf) {
   const int lower_nodes = bulk.meshes().bodies[0].num_nodes();
-  const SceneInterfaceNodes& S = bulk.interface_nodes();
+  const SceneInterfaceNodes& S = bulk.interface_nodes().at(0);
   double worst = 0;
   for (size_t k = 0; k < S.plus.size(); ++k) {
     const Eigen::Vector2d d = r.u.row(lower_nodes + S.plus[k]).transpose() - r.u.row(S.minus[k]).transpose();  // u⁺ − u⁻
@@ -298,4 +264,97 @@ TEST(SceneJson, OverflowAndUnderflowNamed) {
   EXPECT_EQ(expect_input_error("{\"a\": [1,\n 1e999]}"), "s.json:2:6: number overflow parsing '1e999'");
   EXPECT_EQ(expect_input_error("{\"a\": 1e-400}"), "s.json:1:7: the number 1e-400 underflows a double");
   EXPECT_EQ(expect_input_error("{\"a\": 0.0e-400}"), "");  // a plain zero
+}
+
+// Bonded faces (SPEC §1.6): the same bondline at 21.8° under a uniform stress with tension across
+// it (e > 0: σ_N = 12.3 daN/mm² > 0) and shear along it (σ_T = −4.2 daN/mm²). Both faces bonded,
+// the limit law is the bilateral spring σ = −K [u] (K_N = λ̄ + 2μ̄, K_T = μ̄) for either sign of
+// [u]_N, so the uniform state is exact: [u]_N = −σ_N/K_N < 0 (opening), [u]_T = −σ_T/K_T. The
+// expected values are the closed form's, computed above from G, λ, μ and the angle.
+ClosedForm bonded_tension() {
+  ClosedForm cf;
+  cf.e = 1e-3;
+  cf.faces = "{\"plus\": \"bonded\", \"minus\": \"bonded\"}";
+  return cf;
+}
+
+TEST(SceneBonded, LimitModeBilateralSpringCarriesTensionToRoundOff) {
+  const ClosedForm cf = bonded_tension();
+  ASSERT_GT(cf.sigma_N(), 0);  // tension across the bondline
+  ASSERT_GT(std::abs(cf.sigma_T()), 0.1 * cf.sigma_N());
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
+  ASSERT_TRUE(s.report.converged) << s.report.message;
+  EXPECT_TRUE(s.bondlines.at(0).law.bilateral);
+  const double error = jump_error(bulk, s.record, cf);
+  std::printf("bonded closed form, limit mode: max relative jump error %.3e (|[u]| = %.4e mm)\n", error, cf.Delta().norm());
+  EXPECT_LT(error, 1e-9);
+  const InterfaceFields& S = s.record.interfaces.at(0);
+  for (Eigen::Index k = 0; k < S.sigma_N.size(); ++k) {
+    EXPECT_NEAR(S.sigma_N[k], cf.sigma_N(), 1e-9 * cf.sigma_N());
+    EXPECT_NEAR(S.sigma_T[k], cf.sigma_T(), 1e-9 * cf.sigma_N());
+    EXPECT_NEAR(S.jump_N[k], cf.jump_N(), 1e-9 * cf.Delta().norm());
+    EXPECT_NEAR(S.jump_T[k], cf.jump_T(), 1e-9 * cf.Delta().norm());
+    EXPECT_LT(S.jump_N[k], 0);   // opening, and yet carrying the tension
+    EXPECT_EQ(S.status[k], 2);   // a loaded bonded node is "stick", never "gap"
+  }
+  EXPECT_TRUE(s.carries_load);
+}
+
+// The meshed layer with both faces tied converges to the bilateral law at first order in ε
+// (studies/convergence_rates.md, case d: O(ε) remainder): within 1 % of |[u]| at ε = 1e-2 and a
+// factor ≥ 5 per decade below.
+TEST(SceneBonded, LayerModeBondedLayerConvergesToTheBilateralJumps) {
+  const ClosedForm cf = bonded_tension();
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  double previous = INFINITY;
+  for (double eps : {1e-2, 1e-3, 1e-4}) {
+    const SceneFileScene s = solve_scene_file_layer(bulk, eps, SolverKind::Fast, SolverOptions{});
+    ASSERT_TRUE(s.report.converged) << "eps " << eps << ": " << s.report.message;
+    const double error = jump_error(bulk, s.record, cf);
+    std::printf("bonded closed form, layer mode at eps %g: max relative jump error %.3e\n", eps, error);
+    EXPECT_LT(error, 1e-2) << "eps " << eps;
+    EXPECT_LT(error, previous / 5) << "eps " << eps;
+    previous = error;
+    EXPECT_EQ(s.counts.combined.gap, 0);  // tension carried through both tied faces
+  }
+}
+
+// The same tension with the paper's faces (contact on both): the bondline opens everywhere and
+// carries nothing, which the scene says (carries_load false).
+TEST(SceneBonded, ContactFacesOpenUnderTheSameTension) {
+  ClosedForm cf = bonded_tension();
+  cf.faces = "";
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
+  ASSERT_TRUE(s.report.converged) << s.report.message;
+  EXPECT_EQ(s.limit.gap, static_cast<int>(s.record.interfaces.at(0).status.size()));
+  EXPECT_FALSE(s.carries_load);
+  for (Eigen::Index k = 0; k < s.record.interfaces.at(0).sigma_N.size(); ++k) {
+    EXPECT_EQ(s.record.interfaces.at(0).sigma_N[k], 0.0);
+    EXPECT_LT(s.record.interfaces.at(0).jump_N[k], 0.0);  // open
+  }
+}
+
+// One face bonded, one in contact (SPEC §1.6): under tension the contact face opens and the layer
+// hangs on its bonded face (held, not floating free: the solve converges).
+TEST(SceneBonded, OneFaceBondedTheContactFaceOpens) {
+  ClosedForm cf = bonded_tension();
+  cf.faces = "{\"plus\": \"bonded\", \"minus\": \"contact\"}";
+  Folder f;
+  f.write("cf.geo", cf.geo());
+  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  const SceneFileScene s = solve_scene_file_layer(bulk, 1e-3, SolverKind::Fast, SolverOptions{});
+  ASSERT_TRUE(s.report.converged) << s.report.message;
+  EXPECT_EQ(s.counts.minus_face.gap, static_cast<int>(s.record.interfaces.at(1).status.size()));  // S-: contact, open
+  EXPECT_FALSE(s.carries_load);
+  const SceneFileScene limit = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
+  EXPECT_FALSE(limit.bondlines.at(0).law.bilateral);  // one contact face: the Table 1 law
+  EXPECT_FALSE(limit.carries_load);
 }

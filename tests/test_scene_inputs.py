@@ -245,7 +245,7 @@ def hostile_scenes(folder, write):
     refused("conflicting supports (the clamp twice)", ["solve", "--scene", with_changes("clamp_twice", lambda s: s["supports"].extend(
             [{"group": "clamp", "u": [1, 1]}])), *out], "support group 'clamp' is given twice", folder)
     refused("duplicate loads", ["solve", "--scene", with_changes("press_twice", lambda s: s["loads"].append(
-            {"group": "press", "traction": [0, -5]})), *out], "their tractions would add up", folder)
+            {"group": "press", "traction": [0, -5]})), *out], "load group 'press' is given twice", folder)
     refused("two bodies on one physical surface", ["solve", "--scene", with_changes("same_surface", lambda s: s["bodies"].update(
             {"third": {"group": "lower", "lambda": 5108, "mu": 2632}})), *out], "are the same physical surface 'lower'", folder)
     refused("two groups naming one surface", ["solve", "--scene", with_geo("alias", last='Physical Surface("alias") = {1};',
@@ -307,6 +307,50 @@ def hostile_scenes(folder, write):
     print("case SIGTERM while gmsh loops: thinlayer and its meshing child gone")
 
 
+def done_when(folder):
+    """Issue 27's "Done when", as a new user runs it: the shipped double lap (0.2 mm of epoxy,
+    E = 3000 MPa, nu = 0.35, between aluminium strips, in N and MPa, bonded) in one
+    `study validity --scene`: both modes, the verdict, a report showing the bondline shear and peel
+    stresses, and the bondline fields as CSV."""
+    lap = os.path.join(os.path.dirname(LAP), "double_lap")
+    for name in ("double_lap.json", "double_lap.geo"):
+        shutil.copy(os.path.join(lap, name), os.path.join(folder, name))
+    r = subprocess.run([THINLAYER, "study", "validity", "--scene", "double_lap.json", "--out", "dl", "--quiet"], cwd=folder,
+                       capture_output=True, text=True)
+    check("double lap: study exit 0", r.returncode == 0, r.stdout[-2000:] + r.stderr)
+    check("double lap: the verdict printed", "Thickness validity" in r.stdout and "0.01" in r.stdout, r.stdout[-2000:])
+    results = os.path.join(folder, "dl", "results.h5")
+    if not os.path.exists(results):
+        check("double lap: results.h5", False, "missing")
+        return
+    with h5py.File(results) as h:
+        g = h["studies"]["scene"]["double-lap"]
+        check("double lap: an engineer's glue", g.attrs["family"] == "engineer", str(dict(g.attrs)))
+        check("double lap: both modes", {h["scenes"][s].attrs["mode"] for s in h["scenes"]} == {"limit", "layer"}, "")
+        check("double lap: validity", set(g["validity"]["status"].asstr()[()]) <= {"found", "at_least", "below_range"}, "")
+        described = all("description" in g[d].attrs for d in ("eps", "e_u", "validity/eps_max", "peaks/shear"))
+        check("double lap: study datasets described", described and g["eps"].attrs["units"] == "mm" and
+              g["peaks"]["shear"].attrs["units"] == "MPa", "")
+        limit = h["scenes"][g["limit_scene"].asstr()[0]]
+        check("double lap: loads and supports stored", "supports" in limit and set(limit["supports"]) == {"clamp", "grip"}, "")
+        check("double lap: in MPa", limit["interface"]["bond_top"]["S"]["sigma_T"].attrs["units"] == "MPa", "")
+    with open(os.path.join(folder, "dl", "report", "index.html"), encoding="utf-8") as f:
+        page = f.read()
+    check("double lap: the joint's report", "<title>thinlayer joint report: double-lap</title>" in page and
+          "shear stresses" in page and "peel" in page and "not in this results file" not in page, page[:300])
+    for name in ("joint_double-lap_bondline_bond_top.png", "joint_double-lap_peaks.png", "joint_double-lap_shape.png"):
+        check("double lap: figure " + name, os.path.exists(os.path.join(folder, "dl", "report", "figures", name)), name)
+    # The joint's report is the report's own: a second run replaces it.
+    report_py = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "report", "make_report.py")
+    r = subprocess.run([sys.executable, report_py, results, os.path.join(folder, "dl", "report")], capture_output=True,
+                       text=True)
+    check("double lap: the report re-run over its own", r.returncode == 0, r.stderr)
+    with open(os.path.join(folder, "dl", "bondline_fields.csv"), encoding="utf-8") as f:
+        rows = [line for line in f if not line.startswith("#")]
+    check("double lap: bondline fields as CSV", rows[0].startswith("scene,mode,eps,h,bondline,node,s,") and len(rows) > 100,
+          rows[0] if rows else "empty")
+
+
 def main():
     folder = tempfile.mkdtemp(prefix="thinlayer-scene-")
     try:
@@ -360,14 +404,76 @@ def main():
         write("type.json", s)
         refused("wrong type", ["solve", "--scene", "type.json", *outs], "'mu' in body 'a' must be a number, not a string", folder)
         write("good.json", scene())
-        refused("eps too thick", ["solve", "--scene", "good.json", "--mode", "layer", "--eps", "0.4", *outs],
-                "too thick for the elements of body 'b'", folder)
+        # The plus body moves with its bondline (cases/scene/scene_morph.h): the 4 mm bondline holds a
+        # layer up to a tenth of its length.
+        refused("eps too thick", ["solve", "--scene", "good.json", "--mode", "layer", "--eps", "0.5", *outs],
+                "too thick for this joint: at most 0.4 mm, a tenth of the length of the interface", folder)
         refused("bad number", ["solve", "--scene", "good.json", "--mode", "layer", "--eps", "0x10", *outs], "--eps", folder)
         refused("case and scene", ["solve", "--scene", "good.json", "--case", "bar", *outs], "--case", folder)
         refused("study: bad scene", ["study", "convergence", "--scene", "unknown.json", "--out", "study"], "unknown key 'frction'",
                 folder)
         refused("study: scene on a study without", ["study", "table3", "--scene", "good.json", "--out", "study"],
                 "--scene applies to study convergence and study validity only", folder)
+
+        # The engineer's joint keys (issue 27): each bad value refused at its line.
+        s = scene()
+        s["interface"]["faces"] = {"plus": "glued"}
+        write("faces.json", s)
+        refused("bad face", ["solve", "--scene", "faces.json", *outs], "'plus' in faces must be \"bonded\" or \"contact\"", folder)
+        s = scene()
+        s["interface"]["glue"] = {"E": 3000, "nu": 0.35, "thickness": 0.2}
+        write("twoglues.json", s)
+        refused("layer and glue", ["solve", "--scene", "twoglues.json", *outs], "needs exactly one of 'layer', 'glue' and 'law'",
+                folder)
+        s = scene()
+        del s["interface"]["layer"]
+        s["interface"]["glue"] = {"E": 3000, "nu": 0.35}
+        write("nothick.json", s)
+        refused("glue without thickness", ["solve", "--scene", "nothick.json", *outs], "glue has no 'thickness'", folder)
+        s = scene()
+        s["loads"] = [{"group": "top", "traction": [0, 1], "pressure": 2}]
+        write("twoloads.json", s)
+        refused("two kinds of load", ["solve", "--scene", "twoloads.json", *outs], "needs exactly one of 'traction'", folder)
+        write("kN.json", scene(units="mm-kN"))
+        refused("unknown units", ["solve", "--scene", "kN.json", *outs], "'units' must be \"mm-daN\" (the default) or \"mm-N\"",
+                folder)
+        s = scene()
+        s["interfaces"] = [dict(s["interface"]), dict(s["interface"])]
+        del s["interface"]
+        write("twice.json", s)
+        refused("bondline listed twice", ["solve", "--scene", "twice.json", *outs], "bondline group 'bond' is listed twice", folder)
+        s = scene()
+        s["interfaces"] = [s["interface"]]
+        write("both.json", s)
+        refused("interface and interfaces", ["solve", "--scene", "both.json", *outs],
+                "exactly one of 'interface' (one bondline) and 'interfaces'", folder)
+        s = scene()
+        s["bodies"]["a"]["E"] = 7000
+        write("lame_and_young.json", s)
+        refused("lambda and E", ["solve", "--scene", "lame_and_young.json", *outs], "needs either 'lambda' and 'mu' or 'E' and 'nu'",
+                folder)
+        refused("layer mode without a thickness", ["solve", "--scene", "good.json", "--mode", "layer", *outs],
+                "layer mode needs --eps", folder)
+        refused("eps in limit mode of the paper's family", ["solve", "--scene", "good.json", "--eps", "0.01", *outs],
+                "--eps applies to the layer mode only", folder)
+
+        # The same joint pulled apart with its faces in contact (the paper's): nothing holds it
+        # across the bondline, and the solve says so.
+        s = scene()
+        s["supports"] = [{"group": "bottom", "u": [0, 0]}, {"group": "top", "u": [0, 0.001]}]
+        write("apart.json", s)
+        r = subprocess.run([THINLAYER, "solve", "--scene", "apart.json", "--json"], cwd=folder, capture_output=True, text=True)
+        check("no load: said", r.returncode == 0 and "carries no load" in r.stderr and
+              json.loads(r.stdout)["carries_load"] is False, r.stdout + r.stderr)
+        s["interface"]["faces"] = {"plus": "bonded", "minus": "bonded"}
+        write("bonded.json", s)
+        r = subprocess.run([THINLAYER, "solve", "--scene", "bonded.json", "--json"], cwd=folder, capture_output=True, text=True)
+        if r.returncode == 0:
+            j = json.loads(r.stdout)
+            check("bonded: carries the tension", j["carries_load"] and j["reactions"]["top"][1] > 0, r.stdout)
+            check("bonded: reactions in --json balance", abs(j["reactions"]["top"][1] + j["reactions"]["bottom"][1]) < 1e-9, r.stdout)
+        else:
+            check("bonded solve", False, r.stderr)
 
         # A support on a physical point: the bottom on rollers, the corner pinned.
         s = scene()
@@ -403,6 +509,7 @@ def main():
             j = json.loads(r.stdout)
             check("lap joint layer converged", j["converged"], r.stdout)
             check("lap joint layer faces", set(j["counts"]) == {"S+", "S-", "combined"}, r.stdout)
+        done_when(folder)
         hostile_scenes(folder, write)
     finally:
         shutil.rmtree(folder)

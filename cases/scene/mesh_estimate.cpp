@@ -104,8 +104,9 @@ double inverse_square_size_integral(double a, double l, double h_i, double h_f) 
 }
 
 double estimate_from_mesh_size(const SceneSpec& spec) {
-  const std::vector<int> bondline = entities(1, spec.interface.group);
-  const std::set<int> on_bondline(bondline.begin(), bondline.end());
+  std::set<int> on_bondline;
+  for (const SceneInterfaceSpec& i : spec.interfaces)
+    for (int c : entities(1, i.group)) on_bondline.insert(c);
   const double h_i = clipped(*spec.h_interface), h_f = std::max(h_i, clipped(*spec.h_far));
   double nodes = 0;
   for (const SceneBodySpec& b : spec.bodies) {

@@ -32,12 +32,13 @@ std::string shown(const std::string& name) {
   return out;
 }
 
-void check_name(const std::string& where, const std::string& what, const std::string& name, bool names_a_dataset) {
+// `dataset`: the results file's group the name becomes a member of ("reactions/"), or "".
+void check_name(const std::string& where, const std::string& what, const std::string& name, const std::string& dataset) {
   for (unsigned char c : name)
     if (c < 0x20 || c == 0x7f)
       fail_at(where, what + " '" + shown(name) + "' holds a control character (the results file's names are text)");
-  if (names_a_dataset && (name.find('/') != std::string::npos || name == "." || name == ".."))
-    fail_at(where, what + " '" + name + "' names a dataset of the results file (reactions/" + name +
+  if (!dataset.empty() && (name.find('/') != std::string::npos || name == "." || name == ".."))
+    fail_at(where, what + " '" + name + "' names a dataset of the results file (" + dataset + name +
                        "): it may hold no '/' and be no '.' or '..'");
 }
 
@@ -48,12 +49,19 @@ void check_names(const SceneSpec& spec, const PositionedJson& doc) {
             "'name' '" + spec.name + "' names no group of the results file (/studies/scene/<name>): give it a letter or digit");
   }
   for (const SceneBodySpec& b : spec.bodies) {
-    check_name(b.where, "body name", b.name, false);
-    check_name(b.group_where, "body '" + shown(b.name) + "': group", b.group, false);
+    check_name(b.where, "body name", b.name, "");
+    check_name(b.group_where, "body '" + shown(b.name) + "': group", b.group, "");
   }
-  check_name(spec.interface.group_where, "interface group", spec.interface.group, false);
-  for (const SceneSupportSpec& s : spec.supports) check_name(s.where, "support group", s.group, true);
-  for (const SceneLoadSpec& l : spec.loads) check_name(l.where, "load group", l.group, true);
+  for (const SceneInterfaceSpec& i : spec.interfaces)  // in the list form, interface/<group>/S
+    check_name(i.group_where, "bondline group", i.group, spec.interface_list ? "interface/" : "");
+  for (const SceneSupportSpec& s : spec.supports) check_name(s.where, "support group", s.group, "reactions/");
+  for (const SceneLoadSpec& l : spec.loads) check_name(l.where, "load group", l.group, "loads/");
+}
+
+bool is_bondline(const SceneSpec& spec, const std::string& group) {
+  for (const SceneInterfaceSpec& i : spec.interfaces)
+    if (i.group == group) return true;
+  return false;
 }
 
 void check_materials(const SceneSpec& spec) {
@@ -70,7 +78,7 @@ void check_groups(const SceneSpec& spec) {
   std::map<std::string, std::size_t> support_of, load_of;
   for (std::size_t k = 0; k < spec.supports.size(); ++k) {
     const SceneSupportSpec& s = spec.supports[k];
-    if (s.group == spec.interface.group)
+    if (is_bondline(spec, s.group))
       fail_at(s.where, "support on the bondline '" + s.group + "': its nodes are in contact, not held (support a "
                        "curve of a body's boundary away from it)");
     if (auto [it, fresh] = support_of.emplace(s.group, k); !fresh)
@@ -79,11 +87,12 @@ void check_groups(const SceneSpec& spec) {
   }
   for (std::size_t k = 0; k < spec.loads.size(); ++k) {
     const SceneLoadSpec& l = spec.loads[k];
-    if (l.group == spec.interface.group)
+    if (is_bondline(spec, l.group))
       fail_at(l.where, "load on the bondline '" + l.group + "': it carries the contact between the bodies, not a load");
+    // Each load is written as loads/<group> too: one load per group.
     if (auto [it, fresh] = load_of.emplace(l.group, k); !fresh)
       fail_at(l.where, "load group '" + l.group + "' is given twice (loads " + std::to_string(it->second) + " and " +
-                           std::to_string(k) + "): their tractions would add up; give their sum once");
+                           std::to_string(k) + "): they would add up; give their sum once");
   }
 }
 
@@ -117,16 +126,18 @@ void check_shared_cells(const SceneSpec& spec, const SceneMeshes& meshes) {
 void check_supports_on_nodes(const SceneSpec& spec, const SceneMeshes& meshes) {
   for (std::size_t b = 0; b < meshes.bodies.size(); ++b) {
     const Mesh& m = meshes.bodies[b];
-    std::set<int> bondline;
-    if (auto it = m.node_sets.find(spec.interface.group); it != m.node_sets.end()) bondline = {it->second.begin(), it->second.end()};
+    std::map<int, std::string> bondline;  // node -> its bondline's group
+    for (const SceneInterfaceSpec& i : spec.interfaces)
+      if (auto it = m.node_sets.find(i.group); it != m.node_sets.end())
+        for (int n : it->second) bondline.emplace(n, i.group);
     std::map<std::pair<int, int>, std::pair<double, const SceneSupportSpec*>> prescribed;  // (node, component) -> value, by
     for (const SceneSupportSpec& s : spec.supports) {
       auto nodes = m.node_sets.find(s.group);
       if (nodes == m.node_sets.end()) continue;
       for (int n : nodes->second) {
-        if (bondline.count(n))
+        if (auto on = bondline.find(n); on != bondline.end())
           fail_at(s.where, "support group '" + s.group + "' holds the node " + point_of(m, n) + " of the bondline '" +
-                               spec.interface.group + "' (body '" + spec.bodies[b].name +
+                               on->second + "' (body '" + spec.bodies[b].name +
                                "'): a node in contact cannot also be prescribed");
         for (int c = 0; c < 2; ++c) {
           if (!s.u[c]) continue;

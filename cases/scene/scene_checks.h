@@ -6,15 +6,17 @@
 // On the scene's data (SceneSpec), whatever keys gave them:
 //   - names: the scene's name is no HDF5 path ('.', '..'); a name (body, group) holds no
 //     control character (a NUL cut the results file's strings short) and a group that names a
-//     results dataset (reactions/<group>) no '/';
+//     results dataset (reactions/<group>, loads/<group>, interface/<group> of the list form) no
+//     '/' and is no '.' or '..';
 //   - materials: a valid 3D isotropic one, μ > 0 and 3λ + 2μ > 0 (bulk modulus > 0, Poisson's
 //     ratio in (−1, 1/2)), in plane strain and plane stress alike;
 //   - supports and loads: each group once (a second support of the same group was silently
-//     ignored, a second load added up), none on the bondline;
+//     ignored, a second load added up; both are written as supports/<group>, loads/<group>),
+//     none on a bondline;
 //   - two bodies on the same physical surface.
 // On its meshes (after gmsh, before any assembly):
 //   - two bodies sharing cells (the same surface under two group names);
-//   - a node of the bondline that a support also holds (the solvers treat an interface node as
+//   - a node of a bondline that a support also holds (the solvers treat an interface node as
 //     free: the solve failed with "interface node with a prescribed displacement component");
 //   - two supports prescribing different displacements to one node;
 //   - a Q1 cell inverted or not convex (a non-positive Jacobian at a corner).

@@ -1,16 +1,23 @@
 #pragma once
 // Scenes of a user's scene file (SPEC §5), both modes: the limit mode's bulk is built and
-// factored once and shared by every limit solve; each layer scene builds its own model (the
-// layer's moduli and the plus body's nodes depend on ε).
+// factored once and shared by every limit solve (whatever the laws); each layer scene builds its
+// own model (the layers' moduli and the plus bodies' nodes depend on ε).
+//
+// ε, the layers' thickness: the same on every layer bondline when given (> 0), or 0 for each
+// engineer's glue's own thickness. In limit mode it chooses an engineer's glue's law (SPEC §1.3
+// at that thickness); the paper's family's law does not depend on it.
+#include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "cases/layer_scene.h"
 #include "cases/scene/scene_model.h"
 #include "core/fem/linear_system.h"
+#include "core/interface/classifier.h"
 #include "core/io/scene_record.h"
 #include "core/solvers/condensed_interface.h"
 #include "core/solvers/solver_choice.h"
-#include "cases/layer_scene.h"
 
 namespace thinlayer {
 
@@ -21,38 +28,74 @@ class SceneFileBulk {
   explicit SceneFileBulk(SceneSpec spec);
   const SceneSpec& spec() const { return spec_; }
   const SceneMeshes& meshes() const { return meshes_; }
-  const SceneInterfaceNodes& interface_nodes() const { return S_; }
+  const std::vector<SceneInterfaceNodes>& interface_nodes() const { return S_; }
   const Model& model() const { return model_; }
   const LinearSystem& system() const { return *system_; }
   const CondensedInterface& condensed();
-  double thickest_layer() const { return thickest_; }  // mm; 0 for a scene without a layer
+  // The thickest common layer the joint allows (mm; 0 for a scene without a layer mode) and why.
+  double thickest_layer() const { return thickest_.eps; }
+  const std::string& thickest_reason() const { return thickest_.reason; }
+  // SPEC §1.3's L (mm, cases/scene/scene_reference.h) and bondline i's reference.
+  double characteristic_length() const { return L_; }
+  AdherentData reference(int i) const;
+  // The limit law of bondline i standing for layers of thickness eps (0: each glue's own).
+  InterfaceLaw limit_law(int i, double eps) const;
+  // Some bondline gives an engineer's glue (its limit law depends on the thickness).
+  bool has_engineer_glue() const;
+  // Every bondline in limit mode, with its law at eps (geometry only: InterfaceLaw{} laws if !with_laws).
+  std::vector<Interface> limit_interfaces(double eps, bool with_laws = true) const;
 
  private:
   SceneSpec spec_;
   SceneMeshes meshes_;
-  SceneInterfaceNodes S_;
+  std::vector<SceneInterfaceNodes> S_;
   Model model_;
-  double thickest_ = 0;
+  ThickestLayer thickest_;
+  double L_ = 0;
   std::unique_ptr<LinearSystem> system_;
   std::unique_ptr<CondensedInterface> condensed_;
 };
 
-// Throws std::invalid_argument unless the scene has a layer mode at thickness `eps` (mm): a
-// "layer" (not a bare "law"), Q1 elements (the band is Q1), and eps ≤ thickest_layer().
+// Throws std::invalid_argument unless the scene has a layer mode at thickness `eps` (mm; 0 for
+// each glue's own): a "layer" or "glue" somewhere, Q1 elements (the band is Q1), and a thickness
+// the joint can hold (saying why not).
 void check_layer_mode(const SceneFileBulk& bulk, double eps);
+
+// What a scene did on one bondline.
+struct SceneBondline {
+  std::string name;        // its group in the list form, "" in the one-bondline form
+  InterfaceLaw law;        // limit mode: the law solved; layer mode: the limit law of that layer
+  double thickness = 0;    // layer mode: the layer's (mm); 0 in limit mode or for a law only
+  LameModuli moduli;       // layer mode: λ_ε, μ_ε
+  std::vector<int> status;  // per node of S: limit mode S's, layer mode the combined one
+};
 
 struct SceneFileScene {
   SceneRecord record;
   SolveReport report;
-  StatusCount limit;          // limit mode: counts on S
-  LayerCounts counts;         // layer mode: per face and combined
-  MeshQuality layer_quality;  // layer mode only
+  StatusCount limit;          // limit mode: counts over every bondline
+  LayerCounts counts;         // layer mode: per face and combined, over every layer bondline
+  MeshQuality layer_quality;  // layer mode: the first layer's
+  std::vector<SceneBondline> bondlines;
+  std::map<std::string, Eigen::Vector2d> loads;  // each load group's resultant force (force unit per mm)
+  bool carries_load = true;   // false: every bondline node is open (SPEC §5)
 };
 
 SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, const SolverOptions& options,
-                                      double status_tolerance = default_status_tolerance);
-// Throws std::invalid_argument for an ε the plus body's elements do not allow.
+                                      double eps = 0, double status_tolerance = default_status_tolerance);
+// Throws std::invalid_argument for an ε the joint's geometry does not allow.
 SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, SolverKind solver,
                                       const SolverOptions& options, double status_tolerance = default_status_tolerance);
+
+// Writes the scene as every record (core/io/scene_record.h), and what a scene file adds: the
+// applied loads and the supports (`loads/<group>`: kind, the given value, the resultant;
+// `supports/<group>`: u, held), each bondline's law, glue, faces and reference (attributes of
+// `interface` in the one-bondline form, `interface/<group>` in the list form; there also each
+// layer bondline's `combined_status`), the units and L.
+void write_scene_file_scene(H5Writer& file, const SceneFileScene& scene, const SceneFileBulk& bulk);
+
+// The record's interface holding bondline i's stresses on the plus adherent: S (limit, or a law
+// only) or S+ (a layer). Its index in record.interfaces.
+int plus_face_of(const SceneFileBulk& bulk, const SceneRecord& record, int i);
 
 }  // namespace thinlayer

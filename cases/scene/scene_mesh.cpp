@@ -129,16 +129,25 @@ SceneMeshes mesh_in_this_process(const SceneSpec& spec) {
     for (const auto& [key, tags] : groups) (key.first == 1 ? out.curve_groups : out.point_groups).insert(key.second);
     for (const SceneBodySpec& b : spec.bodies)
       if (!find(2, b.group)) fail_at(b.group_where, "body '" + b.name + "': group '" + b.group + "' is no physical surface of " + file);
-    const std::vector<int>* interface = find(1, spec.interface.group);
-    if (!interface) fail_at(spec.interface.group_where, "interface group '" + spec.interface.group + "' is no physical curve of " + file);
+    std::vector<int> bondline_curves;  // every bondline's curves: the mesh is finest along them
+    for (const SceneInterfaceSpec& i : spec.interfaces) {
+      const std::vector<int>* curves = find(1, i.group);
+      if (!curves) fail_at(i.group_where, "interface group '" + i.group + "' is no physical curve of " + file);
+      bondline_curves.insert(bondline_curves.end(), curves->begin(), curves->end());
+    }
     for (const SceneSupportSpec& s : spec.supports)
       if (!find(1, s.group) && !find(0, s.group))
         fail_at(s.where, "support group '" + s.group + "' is no physical curve or point of " + file);
-    for (const SceneLoadSpec& l : spec.loads)
-      if (!find(1, l.group)) fail_at(l.where, "load group '" + l.group + "' is no physical curve of " + file);
+    for (const SceneLoadSpec& l : spec.loads) {
+      if (l.kind == LoadKind::Force && !find(1, l.group) && !find(0, l.group))
+        fail_at(l.where, "load group '" + l.group + "' is no physical curve or point of " + file);
+      if (l.kind != LoadKind::Force && !find(1, l.group))
+        fail_at(l.where, "load group '" + l.group + "' is no physical curve of " + file + " (a " + to_string(l.kind) +
+                             " acts along a curve; a force may act on a point)");
+    }
 
     refuse_oversized_mesh(spec);  // bounded before spent (cases/scene/mesh_estimate.h)
-    if (!spec.geometry.empty()) generate(spec, *interface);
+    if (!spec.geometry.empty()) generate(spec, bondline_curves);
     std::vector<NamedBoundary> boundaries;
     for (const auto& [key, tags] : groups)
       if (key.first <= 1) {

@@ -130,22 +130,47 @@ void read_geometry(const ObjectReader& root, SceneSpec& s) {
 }
 
 SceneBodySpec read_body(const PositionedJson& doc, const std::string& name, const std::string& pointer) {
-  const ObjectReader b(doc, pointer, "body '" + name + "'", {"group", "lambda", "mu"});
+  const ObjectReader b(doc, pointer, "body '" + name + "'", {"group", "lambda", "mu", "E", "nu"});
   SceneBodySpec body;
   body.name = name;
   body.group = b.text("group");
   body.group_where = b.where("group");
+  const bool lame = b.has("lambda") || b.has("mu"), young = b.has("E") || b.has("nu");
+  if (lame == young) b.fail_here("body '" + name + "' needs either 'lambda' and 'mu' or 'E' and 'nu'");
+  if (young) {
+    const double E = b.number("E", 0, modulus_max), nu = b.number("nu", -1, 0.5, /*hi_open=*/true);
+    if (!(E > 0) || !(nu > -1)) b.fail_here("body '" + name + "' needs E > 0 and -1 < nu < 0.5");
+    const LameModuli m = lame_from_young(E, nu);
+    body.lambda = m.lambda;
+    body.mu = m.mu;
+    return body;
+  }
   body.lambda = b.number("lambda", -modulus_max, modulus_max);
   body.mu = b.number("mu", 0, modulus_max);
   if (!(body.mu > 0) || !(body.lambda + body.mu > 0)) b.fail_here("body '" + name + "' needs mu > 0 and lambda + mu > 0");
   return body;
 }
 
-void read_interface(const ObjectReader& root, SceneSpec& s) {
-  const ObjectReader i(root.doc(), root.child("interface"), "interface",
-                       {"group", "plus", "minus", "friction", "layer", "law"});
-  SceneInterfaceSpec& f = s.interface;
-  f.where = root.where("interface");
+// A name that becomes part of an HDF5 path or a scene id: letters, digits, '-', '_', '.'.
+bool plain_name(const std::string& name) {
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.')) return false;
+  return !name.empty();
+}
+
+FaceHold read_face(const ObjectReader& faces, const std::string& key) {
+  if (!faces.has(key)) return FaceHold::Contact;
+  const std::string v = faces.text(key);
+  if (v != "bonded" && v != "contact")
+    faces.fail(key, "'" + key + "' in faces must be \"bonded\" or \"contact\", got \"" + v + "\"");
+  return v == "bonded" ? FaceHold::Bonded : FaceHold::Contact;
+}
+
+SceneInterfaceSpec read_interface(const SceneSpec& s, const PositionedJson& doc, const std::string& pointer,
+                                  const std::string& what, const std::string& where) {
+  const ObjectReader i(doc, pointer, what, {"group", "plus", "minus", "friction", "faces", "layer", "glue", "law"});
+  SceneInterfaceSpec f;
+  f.where = where;
   f.group = i.text("group");
   f.group_where = i.where("group");
   f.plus = i.text("plus");
@@ -153,10 +178,17 @@ void read_interface(const ObjectReader& root, SceneSpec& s) {
   if (s.body_index(f.plus) < 0) i.fail("plus", "'plus' names no body of 'bodies': " + f.plus);
   if (s.body_index(f.minus) < 0) i.fail("minus", "'minus' names no body of 'bodies': " + f.minus);
   if (f.plus == f.minus) i.fail("minus", "'plus' and 'minus' are the same body");
-  f.friction = i.number("friction", 0, 1e6);
-  if (i.has("layer") == i.has("law")) i.fail_here("the interface needs exactly one of 'layer' and 'law'");
+  if (i.has("faces")) {
+    const ObjectReader faces(doc, i.child("faces"), "faces", {"plus", "minus"});
+    f.faces.plus = read_face(faces, "plus");
+    f.faces.minus = read_face(faces, "minus");
+  }
+  // Both faces bonded: no contact anywhere, so no friction (a "friction" given is not used).
+  if (i.has("friction") || !f.faces.both_bonded()) f.friction = i.number("friction", 0, 1e6);
+  const int given = i.has("layer") + i.has("glue") + i.has("law");
+  if (given != 1) i.fail_here(what + " needs exactly one of 'layer', 'glue' and 'law'");
   if (i.has("layer")) {
-    const ObjectReader l(root.doc(), i.child("layer"), "layer", {"gamma", "delta", "lambda_g", "mu_g"});
+    const ObjectReader l(doc, i.child("layer"), "layer", {"gamma", "delta", "lambda_g", "mu_g"});
     SceneLayerSpec layer;
     layer.gamma = l.number("gamma", 0, 100);
     layer.delta = l.number("delta", 0, 2, /*hi_open=*/true);
@@ -164,10 +196,48 @@ void read_interface(const ObjectReader& root, SceneSpec& s) {
     layer.mu_g = l.number("mu_g", 0, modulus_max);
     if (!(layer.mu_g > 0)) l.fail("mu_g", "'mu_g' must be > 0 (the layer needs a shear stiffness)");
     f.layer = layer;
+  } else if (i.has("glue")) {
+    const ObjectReader g(doc, i.child("glue"), "glue", {"E", "nu", "thickness"});
+    SceneGlueSpec glue;
+    glue.E = g.number("E", 0, modulus_max);
+    if (!(glue.E > 0)) g.fail("E", "'E' must be > 0");
+    glue.nu = g.number("nu", -1, 0.5, /*hi_open=*/true);
+    if (!(glue.nu > -1)) g.fail("nu", "'nu' must be in (-1, 0.5)");
+    glue.thickness = g.number("thickness", 0, 1e6);
+    if (!(glue.thickness > 0)) g.fail("thickness", "'thickness' must be > 0 (mm)");
+    f.glue = glue;
   } else {
-    const ObjectReader l(root.doc(), i.child("law"), "law", {"lambda_bar", "mu_bar"});
-    f.law = InterfaceLaw::make(l.number("lambda_bar", 0, inf, false, true), l.number("mu_bar", 0, inf, false, true),
-                               f.friction);
+    const ObjectReader l(doc, i.child("law"), "law", {"lambda_bar", "mu_bar"});
+    f.lambda_bar = l.number("lambda_bar", 0, inf, false, true);
+    f.mu_bar = l.number("mu_bar", 0, inf, false, true);
+  }
+  return f;
+}
+
+void read_interfaces(const ObjectReader& root, SceneSpec& s) {
+  if (root.has("interface") == root.has("interfaces"))
+    root.fail_here("the scene needs exactly one of 'interface' (one bondline) and 'interfaces' (a list of them)");
+  if (root.has("interface")) {
+    s.interfaces.push_back(read_interface(s, root.doc(), root.child("interface"), "interface", root.where("interface")));
+    return;
+  }
+  s.interface_list = true;
+  const json& list = root.object().at("interfaces");
+  if (!list.is_array() || list.empty())
+    root.fail("interfaces", "'interfaces' must be an array of at least one bondline, not " + std::string(type_name(list)));
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string p = root.child("interfaces") + "/" + std::to_string(k);
+    const TextPosition at = root.doc().at(p);
+    SceneInterfaceSpec f = read_interface(s, root.doc(), p, "interface " + std::to_string(k),
+                                          root.doc().source + ":" + std::to_string(at.line) + ":" + std::to_string(at.column));
+    // Its group names its results (interface/<group>/S): one path component of a plain name.
+    const ObjectReader i(root.doc(), p, "interface", {"group", "plus", "minus", "friction", "faces", "layer", "glue", "law"});
+    if (!plain_name(f.group))
+      i.fail("group", "a bondline's group names its results (interface/<group>/S): letters, digits, '-', '_' and '.' only");
+    for (const SceneInterfaceSpec& other : s.interfaces)
+      if (other.group == f.group) i.fail("group", "bondline group '" + f.group + "' is listed twice");
+    f.name = f.group;
+    s.interfaces.push_back(f);
   }
 }
 
@@ -198,18 +268,49 @@ void read_loads(const ObjectReader& root, SceneSpec& s) {
   if (!root.has("loads")) return;
   const json& list = root.object().at("loads");
   if (!list.is_array()) root.fail("loads", "'loads' must be an array, not " + std::string(type_name(list)));
+  const std::string stress = s.units.stress(), force = s.units.force + "/mm";
   for (std::size_t k = 0; k < list.size(); ++k) {
     const std::string p = root.child("loads") + "/" + std::to_string(k);
-    const ObjectReader r(root.doc(), p, "load " + std::to_string(k), {"group", "traction"});
+    const ObjectReader r(root.doc(), p, "load " + std::to_string(k), {"group", "traction", "pressure", "force"});
     SceneLoadSpec load;
     load.group = r.text("group");
     load.where = r.where("group");
-    const json& t = r.require("traction");
-    if (!t.is_array() || t.size() != 2) r.fail("traction", "'traction' must be an array of two numbers (daN/mm^2)");
+    if (r.has("traction") + r.has("pressure") + r.has("force") != 1)
+      r.fail_here("load " + std::to_string(k) + " needs exactly one of 'traction' [tx, ty] (" + stress + "), 'pressure' p (" +
+                  stress + ", compressive positive) and 'force' [Fx, Fy] (" + force + ")");
+    if (r.has("pressure")) {
+      load.kind = LoadKind::Pressure;
+      load.pressure = r.number("pressure", -1e9, 1e9);
+      s.loads.push_back(load);
+      continue;
+    }
+    const std::string key = r.has("traction") ? "traction" : "force";
+    load.kind = key == "traction" ? LoadKind::Traction : LoadKind::Force;
+    const json& t = r.require(key);
+    if (!t.is_array() || t.size() != 2)
+      r.fail(key, "'" + key + "' must be an array of two numbers (" + (key == "traction" ? stress : force) + ")");
     for (int c = 0; c < 2; ++c)
-      load.traction[c] = r.number_value(t[c], r.child("traction") + "/" + std::to_string(c), "a component of 'traction'",
-                                        -1e9, 1e9);
+      load.vector[c] = r.number_value(t[c], r.child(key) + "/" + std::to_string(c), "a component of '" + key + "'", -1e9, 1e9);
     s.loads.push_back(load);
+  }
+}
+
+void read_units(const ObjectReader& root, SceneSpec& s) {
+  if (!root.has("units")) return;
+  const json& v = root.object().at("units");
+  if (v.is_string()) {
+    const std::string u = v.get<std::string>();
+    if (u != "mm-daN" && u != "mm-N") root.fail("units", "'units' must be \"mm-daN\" (the default) or \"mm-N\", got \"" + u + "\"");
+    s.units.force = u == "mm-N" ? "N" : "daN";
+    return;
+  }
+  // The earlier object form, {"length": "mm", "force": "daN" | "N"}.
+  const ObjectReader u(root.doc(), root.child("units"), "units", {"length", "force"});
+  if (u.has("length") && u.text("length") != "mm") u.fail("length", "only \"mm\" lengths are supported");
+  if (u.has("force")) {
+    const std::string f = u.text("force");
+    if (f != "daN" && f != "N") u.fail("force", "'force' must be \"daN\" or \"N\"");
+    s.units.force = f;
   }
 }
 
@@ -224,10 +325,9 @@ void read_options(const ObjectReader& root, SceneSpec& s) {
     if (p != "strain" && p != "stress") root.fail("plane", "'plane' must be \"strain\" or \"stress\", got \"" + p + "\"");
     s.plane = p == "strain" ? PlaneHypothesis::Strain : PlaneHypothesis::Stress;
   }
-  if (root.has("units")) {
-    const ObjectReader u(root.doc(), root.child("units"), "units", {"length", "force"});
-    if (u.has("length") && u.text("length") != "mm") u.fail("length", "only \"mm\" lengths are supported");
-    if (u.has("force") && u.text("force") != "daN") u.fail("force", "only \"daN\" forces are supported");
+  if (root.has("characteristic_length")) {
+    s.characteristic_length = root.number("characteristic_length", 0, 1e9);
+    if (!(*s.characteristic_length > 0)) root.fail("characteristic_length", "'characteristic_length' must be > 0 (mm)");
   }
   if (root.has("eps")) {
     const json& list = root.object().at("eps");
@@ -254,26 +354,45 @@ int SceneSpec::body_index(const std::string& n) const {
   return -1;
 }
 
-InterfaceLaw SceneSpec::limit_law() const {
-  if (interface.law) return *interface.law;
-  // lim ε^(p−1) g: ∞ below 1, g at 1, 0 above (paper §3.1.8, Table 1).
-  auto limit_ratio = [](double p, double g) { return p < 1 ? inf : p > 1 ? 0.0 : g; };
-  const SceneLayerSpec& l = *interface.layer;
-  return InterfaceLaw::make(limit_ratio(l.gamma, l.lambda_g), limit_ratio(l.delta, l.mu_g), interface.friction);
+bool SceneSpec::has_layer() const {
+  for (const SceneInterfaceSpec& i : interfaces)
+    if (i.has_layer_mode()) return true;
+  return false;
+}
+
+bool SceneSpec::engineer_glue_only() const {
+  bool any = false;
+  for (const SceneInterfaceSpec& i : interfaces) {
+    if (i.layer) return false;
+    any = any || i.glue.has_value();
+  }
+  return any;
+}
+
+Glue SceneInterfaceSpec::glue_model() const {
+  if (layer) return Glue::scaled(layer->gamma, layer->delta, layer->lambda_g, layer->mu_g);
+  if (glue) return Glue::engineer(glue->E, glue->nu, glue->thickness);
+  throw std::invalid_argument(label() + " gives a limit law only ('law'): it has no layer");
+}
+
+std::string SceneInterfaceSpec::label() const { return name.empty() ? "the interface" : "bondline '" + name + "'"; }
+
+const char* to_string(LoadKind kind) {
+  return kind == LoadKind::Traction ? "traction" : kind == LoadKind::Pressure ? "pressure" : "force";
 }
 
 SceneSpec scene_spec_from_json(const PositionedJson& doc, const std::string& folder) {
   const ObjectReader root(doc, "", "the scene",
                           {"name", "geometry", "mesh", "mesh_size", "element", "plane", "units", "bodies", "interface",
-                           "supports", "loads", "eps", "layer_elements"});
+                           "interfaces", "supports", "loads", "eps", "layer_elements", "characteristic_length"});
   SceneSpec s;
   s.file = doc.source;
   s.folder = folder;
   s.name = root.text("name");
   // The name becomes HDF5 group and scene names (/studies/scene/<name>, <name>-limit-fast).
-  for (char c : s.name)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.'))
-      root.fail("name", "'name' may hold letters, digits, '-', '_' and '.' only (it names groups in the results file)");
+  if (!plain_name(s.name))
+    root.fail("name", "'name' may hold letters, digits, '-', '_' and '.' only (it names groups in the results file)");
+  read_units(root, s);
   read_options(root, s);
   read_geometry(root, s);
   const json& bodies = root.require("bodies");
@@ -285,13 +404,13 @@ SceneSpec scene_spec_from_json(const PositionedJson& doc, const std::string& fol
     return a.first.line != b.first.line ? a.first.line < b.first.line : a.first.column < b.first.column;
   });
   for (const auto& [pos, name] : order) {
-    if (name == "layer") root.fail("bodies", "a body may not be called 'layer' (the name of the layer mode's layer)");
+    if (name.rfind("layer", 0) == 0)
+      root.fail("bodies", "a body's name may not begin with 'layer' (the names of the layer mode's layers): " + name);
     SceneBodySpec body = read_body(doc, name, "/bodies/" + pointer_token(name));
     body.where = doc.source + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column);
     s.bodies.push_back(body);
   }
-  root.require("interface");
-  read_interface(root, s);
+  read_interfaces(root, s);
   read_supports(root, s);
   read_loads(root, s);
   check_scene_spec(s, doc);  // names, materials, repeated groups (cases/scene/scene_checks.h)

@@ -1,6 +1,9 @@
 #pragma once
 // The user's own joint (SPEC §5): a JSON scene file, read and checked against its schema.
-// Lengths in mm, stresses and moduli in daN/mm², λ̄ and μ̄ in daN/mm³, tractions in daN/mm².
+// Units: lengths in mm; forces in daN (default, "units": "mm-daN": stresses and moduli in
+// daN/mm²) or N ("units": "mm-N": stresses and moduli in MPa). Nothing is converted: every number
+// of a scene is in its own units, and the results are written in them (they say which).
+// λ̄ and μ̄ are in the stress unit per mm.
 //
 // Every key is known (a typo is refused, not ignored), every value has its type and range,
 // and each error names the file, line and column of the bad key or value. Paths (geometry,
@@ -12,6 +15,7 @@
 
 #include "cases/scene/json_positions.h"
 #include "core/fem/material.h"
+#include "core/interface/glue.h"
 #include "core/interface/law.h"
 #include "core/mesh/mesh.h"
 
@@ -20,24 +24,52 @@ namespace thinlayer {
 struct SceneBodySpec {
   std::string name;    // the key in "bodies"
   std::string group;   // gmsh physical surface
-  double lambda = 0, mu = 0;  // daN/mm²
+  double lambda = 0, mu = 0;  // stress unit (daN/mm² or MPa), given or from "E", "nu"
   std::string where;   // "<file>:<line>:<col>" of its key, for later errors (a group missing from the mesh)
   std::string group_where;
 };
 
-// The glue of layer mode: λ_ε = ε^γ λ_g, μ_ε = ε^δ μ_g (γ ≥ 0, 0 ≤ δ < 2).
+// The paper's glue family in layer mode: λ_ε = ε^γ λ_g, μ_ε = ε^δ μ_g (γ ≥ 0, 0 ≤ δ < 2).
 struct SceneLayerSpec {
   double gamma = 1, delta = 1;
-  double lambda_g = 0, mu_g = 0;  // daN/mm²
+  double lambda_g = 0, mu_g = 0;  // stress unit (per mm^γ, per mm^δ)
+};
+
+// An engineer's glue: fixed Young's modulus and Poisson ratio, and its nominal thickness.
+struct SceneGlueSpec {
+  double E = 0, nu = 0;  // stress unit, 1
+  double thickness = 0;  // mm
 };
 
 struct SceneInterfaceSpec {
+  // The bondline's name in the results: "" in the one-bondline form ("interface": interface/S,
+  // S+, S-), its group in the list form ("interfaces": interface/<group>/S, ...).
+  std::string name;
   std::string group;          // gmsh physical curve(s) shared by both bodies
   std::string plus, minus;    // body names; the normal points from minus into plus
-  double friction = 0;
-  std::optional<SceneLayerSpec> layer;  // both modes
-  std::optional<InterfaceLaw> law;      // or: a limit law only (λ̄, μ̄ may be inf)
+  double friction = 0;        // on a contact face (none needed when both faces are bonded)
+  LayerFaces faces;           // "faces": each face of the layer bonded or in contact (default contact)
+  std::optional<SceneLayerSpec> layer;  // the paper's family: both modes
+  std::optional<SceneGlueSpec> glue;    // or an engineer's glue: both modes
+  std::optional<double> lambda_bar, mu_bar;  // or "law": a limit law only (may be inf)
   std::string where, group_where;
+
+  bool has_layer_mode() const { return layer.has_value() || glue.has_value(); }
+  // The glue of layer mode (the paper's family or an engineer's); throws if the bondline gives a law only.
+  Glue glue_model() const;
+  // "bondline 'x'" or "the interface", for messages.
+  std::string label() const;
+};
+
+enum class LoadKind { Traction, Pressure, Force };
+const char* to_string(LoadKind kind);
+
+struct SceneLoadSpec {
+  std::string group;               // physical curve (a force may also be on a physical point)
+  LoadKind kind = LoadKind::Traction;
+  std::array<double, 2> vector{};  // traction (stress unit, x and y) or force (force unit per mm of thickness)
+  double pressure = 0;             // stress unit, normal to the curve, compressive positive
+  std::string where;
 };
 
 struct SceneSupportSpec {
@@ -46,10 +78,12 @@ struct SceneSupportSpec {
   std::string where;
 };
 
-struct SceneLoadSpec {
-  std::string group;               // physical curve
-  std::array<double, 2> traction;  // daN/mm², (x, y)
-  std::string where;
+// "mm-daN" (default) or "mm-N".
+struct SceneUnits {
+  std::string force = "daN";
+  std::string name() const { return "mm-" + force; }
+  std::string stress() const { return force == "N" ? "MPa" : "daN/mm^2"; }
+  std::string stiffness() const { return force + "/mm^3"; }  // λ̄, μ̄, K: stress per mm
 };
 
 struct SceneSpec {
@@ -61,8 +95,11 @@ struct SceneSpec {
   std::optional<double> h_interface, h_far;  // mm, "mesh_size" (geometry only)
   ElementType element = ElementType::Q1;
   PlaneHypothesis plane = PlaneHypothesis::Strain;
+  SceneUnits units;
+  std::optional<double> characteristic_length;  // mm, L of SPEC §1.3 (default: from the adherents)
   std::vector<SceneBodySpec> bodies;  // in file order
-  SceneInterfaceSpec interface;
+  std::vector<SceneInterfaceSpec> interfaces;  // in file order; one in the "interface" form
+  bool interface_list = false;  // given as "interfaces": [...] (output names <group>/S, ...)
   std::vector<SceneSupportSpec> supports;
   std::vector<SceneLoadSpec> loads;
   std::vector<double> eps;  // the studies' ε grid (mm); empty = the default one
@@ -70,9 +107,10 @@ struct SceneSpec {
   std::size_t max_nodes = 2'000'000;  // --max-nodes: a larger mesh is refused before meshing (mesh_estimate.h)
 
   int body_index(const std::string& name) const;  // -1 if none
-  // The limit law: the scene's "law", or the limit of its layer (Table 1, like the dovetail).
-  InterfaceLaw limit_law() const;
-  bool has_layer() const { return interface.layer.has_value(); }
+  // Some bondline has a layer mode ("layer" or "glue").
+  bool has_layer() const;
+  // Every layer-mode bondline gives an engineer's glue (its thicknesses are the scene's own).
+  bool engineer_glue_only() const;
 };
 
 // Reads and checks a scene file: throws InputError with "<file>:<line>:<col>: ..." (or

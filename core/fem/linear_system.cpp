@@ -69,6 +69,8 @@ Eigen::VectorXd assemble_tractions(const Model& model) {
         for (int c = 0; c < 2; ++c) F[offset + 2 * node + c] += 0.5 * length * load.traction[c];
     }
   }
+  for (const NodalForce& load : model.nodal_forces)
+    for (int c = 0; c < 2; ++c) F[model.dof_offset(load.body) + 2 * load.node + c] += load.force[c];
   return F;
 }
 

@@ -73,6 +73,6 @@ class LinearSystem {
 
 // Building blocks, exposed for the tests.
 SparseMatrix assemble_stiffness(const Model& model);
-Eigen::VectorXd assemble_tractions(const Model& model);
+Eigen::VectorXd assemble_tractions(const Model& model);  // the tractions and the nodal forces
 
 }  // namespace thinlayer

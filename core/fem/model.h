@@ -1,6 +1,7 @@
 #pragma once
 // What the finite-element core needs to know about a scene: bodies, supports, loads.
-// Loads are tractions in daN/mm² (force per unit length per unit thickness in plane strain).
+// Loads are tractions in daN/mm² (force per unit length per unit thickness in plane strain) and
+// nodal forces in daN per unit thickness.
 #include <array>
 #include <string>
 #include <vector>
@@ -42,10 +43,19 @@ struct EdgeTraction {
   Eigen::Vector2d traction = Eigen::Vector2d::Zero();  // daN/mm²
 };
 
+// A force on one node, daN per unit thickness (a resultant given on a point of the body).
+struct NodalForce {
+  std::string name;
+  int body = 0;
+  int node = 0;
+  Eigen::Vector2d force = Eigen::Vector2d::Zero();
+};
+
 struct Model {
   std::vector<Body> bodies;
   std::vector<DirichletCondition> dirichlet;
   std::vector<EdgeTraction> tractions;
+  std::vector<NodalForce> nodal_forces;
 
   // First global DOF of each body: body b, node i, component c -> offset(b) + 2 i + c.
   int dof_offset(int body) const {

@@ -1,6 +1,7 @@
 #include "core/interface/law.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -39,6 +40,17 @@ InterfaceLaw InterfaceLaw::make(double lambda_bar, double mu_bar, double frictio
   return InterfaceLaw{lambda_bar, mu_bar, friction};
 }
 
+InterfaceLaw InterfaceLaw::make_bilateral(double lambda_bar, double mu_bar) {
+  InterfaceLaw law = make(lambda_bar, mu_bar, 0.0);
+  law.bilateral = true;
+  return law;
+}
+
+InterfaceLaw InterfaceLaw::tie() {
+  const double inf = std::numeric_limits<double>::infinity();
+  return make_bilateral(inf, inf);
+}
+
 char InterfaceLaw::table1_case() const {
   // Rows of Table 1 by μ̄ (0, finite, ∞), columns by λ̄ (∞, finite, 0).
   static const char table[3][3] = {{'e', 'c', 'a'}, {'f', 'd', 'b'}, {'i', 'h', 'g'}};
@@ -47,10 +59,18 @@ char InterfaceLaw::table1_case() const {
   return table[row][col];
 }
 
+std::string InterfaceLaw::describe() const {
+  std::string text = bilateral ? "bilateral spring, Table 1 class (" : "Table 1 case (";
+  text += table1_case();
+  text += ")";
+  return text;
+}
+
 LocalStress local_stress(const InterfaceLaw& law, double jump_N, double jump_T) {
   if (std::isinf(law.K_N()) || std::isinf(law.K_T()))
     throw std::invalid_argument("local_stress: the law is rigid (K = inf); the stress is not a function of the jump");
   LocalStress s;
+  if (law.bilateral) return {-law.K_N() * jump_N, -law.K_T() * jump_T};  // either sign of [u]_N
   s.sigma_N = -law.K_N() * std::max(jump_N, 0.0);  // spring in series with a stop
   const double threshold = law.friction * std::abs(s.sigma_N);
   const double trial = -law.K_T() * jump_T;         // spring alone

@@ -20,7 +20,7 @@ enum class OutputKind { Results, Vtu, Summary, Csv };
 // Markers of thinlayer's own files.
 constexpr const char* results_layout_name = "thinlayer-results";  // root attribute `layout`
 constexpr const char* vtu_marker = "<!-- written by thinlayer -->";  // the VTU's second line
-constexpr const char* csv_marker = "# written by thinlayer";         // a CSV's first line
+constexpr const char* csv_marker = "# thinlayer";                   // how a CSV's first line starts
 constexpr const char* summary_layout_name = "thinlayer-summary";    // summary.json's "layout"
 
 struct InputFile {

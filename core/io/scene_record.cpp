@@ -153,12 +153,12 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
   for (const auto& [name, value] : scene.text) file.attr(g, name, value);
   for (const auto& [name, value] : scene.numbers) {
     file.attr(g, name, value);
-    if (const std::string unit = unit_of(name); !unit.empty()) file.attr(g, name + "_units", unit);
+    if (const std::string unit = unit_of(name, scene.force_unit); !unit.empty()) file.attr(g, name + "_units", unit);
   }
   for (const auto& [name, value] : scene.integers) file.attr(g, name, value);
   // A dataset with its unit, under the unit's name for it (units.h).
   auto with_unit = [&](const std::string& path, const std::string& quantity) {
-    file.attr(path, "units", unit_of(quantity));
+    file.attr(path, "units", unit_of(quantity, scene.force_unit));
   };
   file.dataset(g + "/mesh/nodes", scene.nodes);
   with_unit(g + "/mesh/nodes", "nodes");

@@ -47,6 +47,9 @@ struct SceneRecord {
   std::vector<double> residual_floor_per_body;  // Residual::per_body_floor: round-off's share
   std::vector<double> residual_nodal_floor_per_body;  // Residual::per_body_nodal_floor
   std::vector<std::string> interface_names;  // (the bodies: body_names above)
+  // The force unit of every number above ("daN": daN and daN/mm^2; "N": N and MPa, a scene file's
+  // "units": "mm-N"); the units written with them say which.
+  std::string force_unit = "daN";
 };
 
 // Interface fields of a solution: jumps g = B u + g_D, stresses σ = r / ℓ, statuses with the

@@ -4,6 +4,15 @@
 
 namespace thinlayer {
 
+std::string unit_of(const std::string& name, const std::string& force_unit) {
+  std::string unit = unit_of(name);
+  if (force_unit == "daN") return unit;
+  // Another force unit: the same numbers in N and MPa (a scene file's "units": "mm-N").
+  for (std::size_t at; (at = unit.find("daN/mm^2")) != std::string::npos;) unit.replace(at, 8, "MPa");
+  for (std::size_t at; (at = unit.find("daN")) != std::string::npos;) unit.replace(at, 3, force_unit);
+  return unit;
+}
+
 std::string unit_of(const std::string& name) {
   static const std::map<std::string, std::string> units = {
       // scene attributes
@@ -30,6 +39,8 @@ std::string unit_of(const std::string& name) {
       {"wall_time_s", "s"},
       {"setup_time_s", "s"},
       {"meshing_time_s", "s"},
+      {"law_thickness", "mm"},
+      {"characteristic_length", "mm"},
       // datasets
       {"nodes", "mm"},
       {"u", "mm"},

@@ -10,6 +10,8 @@ namespace thinlayer {
 // The unit of a scene attribute or dataset by its name ("eps" -> "mm", "sigma_N" ->
 // "daN/mm^2"); "1" for a dimensionless ratio; empty for a count, a code or a text.
 std::string unit_of(const std::string& name);
+// The same in another force unit (a scene file's "units": "mm-N": N, and MPa for daN/mm^2).
+std::string unit_of(const std::string& name, const std::string& force_unit);
 
 // The status codes of every `status` and `combined_status` dataset (SPEC §1.2).
 constexpr const char* status_legend = "0 gap, 1 slide, 2 stick";

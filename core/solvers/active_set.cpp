@@ -15,13 +15,19 @@ namespace thinlayer {
 Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, double complementarity_scale,
                    bool skip_frictionless_rows) {
   const int m = problem.num_nodes();
-  Condensed c{ci.W(), ci.g0(), ci.B_L(), ci.S(), ci.f_L(), Eigen::VectorXd::Zero(2 * m), {}, {}, {}};
+  Condensed c{ci.W(), ci.g0(), ci.B_L(), ci.S(), ci.f_L(), Eigen::VectorXd::Zero(2 * m), {}, {}, {}, {}};
   for (int k = 0; k < m; ++k) {
     const InterfaceLaw& law = problem.law(k);
     c.normal.push_back(law.normal_active());
-    // Without the skip, a frictionless node keeps its tangential row as a slide with r_T = 0.
-    c.tangential.push_back(law.normal_active() && (law.tangential_active() || !skip_frictionless_rows));
-    c.friction.push_back(law.tangential_active() ? law.friction : 0.0);
+    c.bilateral.push_back(law.bilateral);
+    if (law.bilateral) {  // each row carries a force wherever its stiffness is not zero
+      c.tangential.push_back(law.K_T() > 0);
+      c.friction.push_back(0.0);
+    } else {
+      // Without the skip, a frictionless node keeps its tangential row as a slide with r_T = 0.
+      c.tangential.push_back(law.normal_active() && (law.tangential_active() || !skip_frictionless_rows));
+      c.friction.push_back(law.tangential_active() ? law.friction : 0.0);
+    }
     for (int row = 0; row < 2; ++row) {
       const double C = problem.compliance()[2 * k + row];
       if (std::isfinite(C)) c.W(2 * k + row, 2 * k + row) += C;
@@ -39,6 +45,10 @@ std::vector<Active> guess_statuses(const Condensed& c, const Eigen::VectorXd& r,
   const int m = static_cast<int>(c.normal.size());
   std::vector<Active> s(m);
   for (int k = 0; k < m; ++k) {
+    if (c.bilateral[k]) {  // whatever the iterate: bonded, unless the law carries nothing
+      s[k] = c.normal[k] || c.tangential[k] ? Active::Bonded : Active::Gap;
+      continue;
+    }
     const double predicted_pressure = -r[2 * k] + c.kappa[2 * k] * d[2 * k];
     if (!c.normal[k] || predicted_pressure <= 0) {
       s[k] = Active::Gap;
@@ -81,6 +91,14 @@ Step solve_statuses(const Condensed& c, const std::vector<Active>& s) {
   std::vector<std::pair<int, double>> coupling;  // for an r_N column: the T row it drives, and how
   for (int k = 0; k < static_cast<int>(s.size()); ++k) {
     if (s[k] == Active::Gap) continue;
+    if (s[k] == Active::Bonded) {  // d = 0 on each row with a force, r free in sign
+      for (int row = 0; row < 2; ++row)
+        if (row == 0 ? c.normal[k] : c.tangential[k]) {
+          rows.push_back(2 * k + row);
+          coupling.push_back({-1, 0.0});
+        }
+      continue;
+    }
     rows.push_back(2 * k);
     const bool slide = s[k] == Active::SlidePositive || s[k] == Active::SlideNegative;
     // SlidePositive: r_T = +f p = -f r_N; SlideNegative: r_T = -f p = +f r_N.
@@ -159,6 +177,12 @@ namespace {
 
 // Local law at one node with the others frozen: d = q + A r (A the node's 2×2 block).
 Eigen::Vector2d local_solve(const Condensed& c, int k, const Eigen::Vector2d& q, const Eigen::Matrix2d& A) {
+  if (c.bilateral[k]) {  // d = 0 on the rows that carry a force, whatever the sign of r
+    if (c.normal[k] && c.tangential[k]) return A.ldlt().solve(-q);
+    if (c.normal[k]) return {-q[0] / A(0, 0), 0.0};
+    if (c.tangential[k]) return {0.0, -q[1] / A(1, 1)};
+    return Eigen::Vector2d::Zero();
+  }
   if (!c.normal[k] || q[0] <= 0) return Eigen::Vector2d::Zero();  // gap
   if (!c.tangential[k]) return {std::min(0.0, -q[0] / A(0, 0)), 0.0};
   const double f = c.friction[k];

@@ -13,8 +13,9 @@
 
 namespace thinlayer {
 
-// The status a node's rows are solved for in one active-set step.
-enum class Active : int { Gap, Stick, SlidePositive, SlideNegative, Frictionless };
+// The status a node's rows are solved for in one active-set step. Bonded: a bilateral law's
+// node (SPEC §1.6), d = 0 on each row that carries a force, for either sign of r; it never changes.
+enum class Active : int { Gap, Stick, SlidePositive, SlideNegative, Frictionless, Bonded };
 
 struct Condensed {
   Eigen::MatrixXd W;        // W + C
@@ -24,6 +25,7 @@ struct Condensed {
   Eigen::VectorXd kappa;    // the local stiffness of each row, as in the SPEC residual
   std::vector<bool> normal, tangential;  // does the row carry a force at all
   std::vector<double> friction;
+  std::vector<bool> bilateral;            // a bonded node: no stop, no skidding block
 };
 
 // The condensed problem of a scene, with the complementarity parameter κ of each row scaled

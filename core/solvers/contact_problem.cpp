@@ -72,6 +72,11 @@ ContactProblem::ContactProblem(const LinearSystem& system, std::vector<Interface
 Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, const Eigen::Vector2d& d,
                             const Eigen::Vector2d& kappa) {
   Eigen::Vector2d R;
+  if (law.bilateral) {  // d = 0 on each row that carries a force, whatever the sign of r (SPEC §1.6)
+    R[0] = law.normal_active() ? kappa[0] * d[0] : r[0];
+    R[1] = law.K_T() > 0 ? kappa[1] * d[1] : r[1];
+    return R;
+  }
   const double p = -r[0];  // contact pressure force, ≥ 0 in compression
   R[0] = law.normal_active() ? p - std::max(0.0, p + kappa[0] * d[0]) : r[0];
   const double threshold = law.tangential_active() ? law.friction * std::max(p, 0.0) : 0.0;
@@ -177,9 +182,22 @@ Residual contact_residual(const ContactProblem& problem, const Eigen::VectorXd& 
 std::vector<NodeStatus> classify_statuses(const std::vector<InterfaceLaw>& laws,
                                           const Eigen::VectorXd& sigma_N,
                                           const Eigen::VectorXd& sigma_T, double tolerance) {
-  const double scale = sigma_N.size() > 0 ? sigma_N.cwiseAbs().maxCoeff() : 0.0;
+  // The scale: the largest |σ_N|, and at a bilateral node the largest |σ_T| too (a bonded joint
+  // in pure shear carries its load without any σ_N).
+  double scale = 0;
+  for (int k = 0; k < sigma_N.size(); ++k) {
+    scale = std::max(scale, std::abs(sigma_N[k]));
+    if (laws[k].bilateral) scale = std::max(scale, std::abs(sigma_T[k]));
+  }
   std::vector<NodeStatus> status(sigma_N.size());
   for (int k = 0; k < sigma_N.size(); ++k) {
+    if (laws[k].bilateral) {
+      // A bonded node never opens nor slides: "stick" while it carries a stress (tension too,
+      // which is not a gap), "gap" where it carries none.
+      const bool loaded = std::max(std::abs(sigma_N[k]), std::abs(sigma_T[k])) > tolerance * scale;
+      status[k] = loaded ? NodeStatus::Stick : NodeStatus::Gap;
+      continue;
+    }
     const double pressure = -sigma_N[k];
     if (!(pressure > tolerance * scale)) {
       status[k] = NodeStatus::Gap;

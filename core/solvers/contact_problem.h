@@ -8,7 +8,8 @@
 // compliance of the layer's springs (0 for a rigid law), and d the part of the jump taken by
 // the stop and the skidding block. At every node the law then reads (Signorini-Coulomb on d):
 //   r_N ≤ 0, d_N ≤ 0, r_N d_N = 0;   |r_T| ≤ f |r_N|, d_T = -ζ r_T, ζ ≥ 0,
-// and r_N = 0 (r_T = 0) wherever K_N = 0 (K_T = 0).
+// and r_N = 0 (r_T = 0) wherever K_N = 0 (K_T = 0). A bilateral law (a bonded face, SPEC §1.6)
+// reads d_N = 0 and d_T = 0 for either sign of r instead (core/interface/law.h).
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -96,7 +97,9 @@ Eigen::Vector2d natural_map(const InterfaceLaw& law, const Eigen::Vector2d& r, c
                             const Eigen::Vector2d& kappa);
 
 // Gap / slide / stick from the nodal stresses (SPEC §1.2), with a relative tolerance: gap when
-// |σ_N| ≤ tol · max|σ_N| over the interface, slide when |σ_T| ≥ (1 - tol) f |σ_N|.
+// |σ_N| ≤ tol · max|σ_N| over the interface, slide when |σ_T| ≥ (1 - tol) f |σ_N|. A node of a
+// bilateral (bonded) law is "stick" when it carries a stress, |σ_N| or |σ_T| above tol times the
+// largest (tension included), else "gap": it never slides.
 struct StatusCount {
   int gap = 0, slide = 0, stick = 0;
   bool operator==(const StatusCount&) const = default;

@@ -65,6 +65,7 @@ Condensed eliminate_layer(const Condensed& c, const Eigen::MatrixXd& K_s, const 
   out.normal = c.normal;
   out.tangential = c.tangential;
   out.friction = c.friction;
+  out.bilateral = c.bilateral;
   return out;
 }
 

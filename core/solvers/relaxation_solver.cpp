@@ -97,6 +97,10 @@ SolveReport solve_relaxation(const ContactProblem& problem, const SolverOptions&
   const int max_sweeps = options.max_iterations > 0 ? options.max_iterations : 100000;
   const double omega = options.omega;
   if (!(omega > 0 && omega < 2)) throw std::invalid_argument("relaxation: omega must be in (0, 2)");
+  for (int k = 0; k < problem.num_nodes(); ++k)  // the paper's algorithm knows Signorini-Coulomb only
+    if (problem.law(k).bilateral)
+      throw std::invalid_argument("the relaxation solver (the paper's algorithm) has no bonded faces (interface '" +
+                                  problem.interfaces()[problem.interface_of(k)].name + "'): use the fast solver");
 
   const LinearSystem& system = problem.system();
   const LocalFrame frame = local_frame(problem);

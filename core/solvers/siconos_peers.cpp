@@ -133,6 +133,9 @@ SolveReport solve_siconos(const ContactProblem& problem, const CondensedInterfac
   if (condensed.num_floating_unknowns() > 0)
     throw std::invalid_argument(std::string(to_string(solver)) +
                                 ": scenes with a floating body (thin-layer mode) are not supported");
+  for (int k = 0; k < problem.num_nodes(); ++k)  // Siconos' 2D Coulomb problem is unilateral
+    if (problem.law(k).bilateral)
+      throw std::invalid_argument(std::string(to_string(solver)) + ": bonded faces (a bilateral law) are not supported");
   // Timed like solve_fast: the mapping, the peer's solve, and the displacement and residual.
   const auto start = std::chrono::steady_clock::now();
   SolveReport report;

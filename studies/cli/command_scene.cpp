@@ -5,17 +5,17 @@
 #include <filesystem>
 #include <iostream>
 
-#include <nlohmann/json.hpp>
-
 #include "cases/scene/scene_mesh_child.h"
 #include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 #include "core/io/vtu_writer.h"
-#include "studies/tools/format.h"
 #include "studies/cli/options.h"
-#include "studies/parallel/process_group.h"
 #include "studies/cli/results_file.h"
+#include "studies/cli/scene_report.h"
 #include "studies/drivers/scene_file_study.h"
+#include "studies/drivers/scene_solve_output.h"
+#include "studies/parallel/process_group.h"
+#include "studies/tools/format.h"
 
 namespace thinlayer {
 
@@ -24,7 +24,7 @@ namespace {
 struct SceneSolveInput : SolveRun {
   std::string scene, mode = "limit";
   std::size_t max_nodes = SceneSpec{}.max_nodes;
-  double eps = 0;
+  double eps = 0;  // 0: an engineer's glue at its own thickness (checked with the scene)
 };
 
 // What applies to a scene file's solve; the bar's and the dovetail's options do not.
@@ -45,82 +45,21 @@ SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   if (in.scene.empty()) throw std::invalid_argument("--scene needs a file");
   in.max_nodes = max_nodes(c, a.max_nodes);
   in.mode = given(c, "mode") ? a.mode : "limit";
-  if (in.mode == "layer") {
-    if (!given(c, "eps")) throw std::invalid_argument("layer mode needs --eps");
+  if (given(c, "eps")) {  // without it, an engineer's glue's own thickness (checked with the scene)
     in.eps = a.eps;
     if (!(in.eps > 0) || std::isinf(in.eps)) throw std::invalid_argument("--eps must be finite and > 0");
-  } else if (given(c, "eps")) {
-    throw std::invalid_argument("--eps applies to the layer mode only");
   }
   parse_solve_run(c, a, in);
   return in;
 }
 
-nlohmann::json counts_json(const StatusCount& c) { return {{"gap", c.gap}, {"slide", c.slide}, {"stick", c.stick}}; }
-
-std::string summary_line(const SceneSolveInput& in, const SceneRecord& record, const SolveReport& report) {
-  nlohmann::json counts;
-  for (const InterfaceFields& f : record.interfaces) counts[f.name] = counts_json(f.counts());
-  if (!record.combined_status.empty()) {
-    std::vector<NodeStatus> combined;
-    for (int v : record.combined_status) combined.push_back(static_cast<NodeStatus>(v));
-    counts["combined"] = counts_json(count_statuses(combined));
-  }
-  const nlohmann::json j = {
-      {"scene", record.id},
-      {"case", record.text.at("case")},
-      {"scene_file", in.scene},
-      {"mode", in.mode},
-      {"law_case", record.text.at("law_case")},
-      {"solver", report.solver},
-      {"converged", report.converged},
-      {"stop_cause", to_string(report.stop_cause)},
-      {"iterations", report.iterations},
-      {"residual", {{"value", report.residual.value()}, {"interface", report.residual.interface},
-                    {"bulk", report.residual.bulk}, {"tolerance", report.tolerance}}},
-      {"counts", counts},
-      {"times_s", {{"solve", report.wall_time_s}, {"setup", record.numbers.at("setup_time_s")},
-                   {"meshing", record.numbers.at("meshing_time_s")}}},
-      {"out", in.out.empty() ? nullptr : nlohmann::json(in.out)},
-      {"vtu", in.vtu.empty() ? nullptr : nlohmann::json(in.vtu)},
-  };
-  return j.dump();
+void write_results(const std::string& path, const SceneFileScene& scene, const SceneFileBulk& bulk,
+                   const OutputRules& rules) {
+  auto out = open_results_file(path, rules);
+  write_scene_file_scene(*out, scene, bulk);
+  write_checks(*out, {});
+  out->commit();
 }
-
-void print_counts(const char* what, const StatusCount& c) {
-  std::printf("  %-9s gap %3d  slide %3d  stick %3d\n", what, c.gap, c.slide, c.stick);
-}
-
-void print_scene(const SceneFileBulk& bulk, const SceneSolveInput& in, const SceneFileScene& s) {
-  const SceneSpec& spec = bulk.spec();
-  const InterfaceLaw law = spec.limit_law();
-  std::printf("scene %s (%s), %s mode%s; limit law: Table 1 case %c (lambda_bar %g, mu_bar %g daN/mm^3, f %g)\n",
-              spec.name.c_str(), spec.file.c_str(), in.mode.c_str(), in.mode == "layer" ? (" at eps " + plain(in.eps) + " mm").c_str() : "",
-              law.table1_case(), law.lambda_bar, law.mu_bar, law.friction);
-  std::printf("  meshes:");
-  for (std::size_t b = 0; b < spec.bodies.size(); ++b)
-    std::printf(" %s %d nodes%s", spec.bodies[b].name.c_str(), bulk.meshes().bodies[b].num_nodes(),
-                bulk.model().bodies[b].floating ? " (held by contact alone)" : "");
-  std::printf("; %zu nodes on S; meshed in %.3f s\n", bulk.interface_nodes().plus.size(), bulk.meshes().meshing_time_s);
-  if (in.mode == "limit") {
-    print_counts("S", s.limit);
-  } else {
-    const MeshQuality& q = s.layer_quality;
-    std::printf("  layer: %d Q1 cells, angles %.1f..%.1f deg, aspect ratio up to %.3g\n", q.cells, q.min_angle_deg,
-                q.max_angle_deg, q.max_aspect_ratio);
-    print_counts("S+", s.counts.plus_face);
-    print_counts("S-", s.counts.minus_face);
-    print_counts("combined", s.counts.combined);
-  }
-  const SolveReport& r = s.report;
-  const std::string outcome = r.converged ? "converged" : std::string("NOT converged (") + to_string(r.stop_cause) + ")";
-  std::printf("  %s after %d iterations; residual %.3e (interface %.3e, bulk %.3e), tolerance %.0e\n", outcome.c_str(),
-              r.iterations, r.residual.value(), r.residual.interface, r.residual.bulk, r.tolerance);
-  std::printf("  time: solve %.4f s, setup %.4f s\n  reactions (daN/mm):", r.wall_time_s, s.record.numbers.at("setup_time_s"));
-  for (const auto& [name, R] : s.record.reactions) std::printf(" %s (%.6g, %.6g)", name.c_str(), R.x(), R.y());
-  std::printf("\n");
-}
-
 
 // One line on stderr, the exit status of its kind.
 int fail(const std::string& command, const std::exception& e, int status) {
@@ -146,7 +85,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
-    if (in.mode == "layer") check_layer_mode(*bulk, in.eps);
+    check_scene_eps(*bulk, in.mode, in.eps);
   } catch (const std::invalid_argument& e) {
     return fail("solve", e, 2);
   } catch (const OutputError& e) {
@@ -155,14 +94,15 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     return fail("solve", e, 2);
   }
   try {
-    const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options)
+    const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options, in.eps)
                                                 : solve_scene_file_layer(*bulk, in.eps, in.solver, in.options);
-    if (!in.json) print_scene(*bulk, in, s);
-    if (!in.out.empty()) write_scene_file(in.out, s.record, {inputs, in.force});
+    if (!in.json) print_scene_solve(*bulk, in.mode, in.eps, s);
+    if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force});
     if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
-    if (in.json) std::printf("%s\n", summary_line(in, s.record, s.report).c_str());
+    if (in.json) std::printf("%s\n", scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu).c_str());
+    if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!s.report.converged) {
       std::cerr << "thinlayer solve: " << s.report.message << "\n";
       return 1;
@@ -204,7 +144,10 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     SceneSpec spec = read_scene_spec(scene);
     spec.max_nodes = max_nodes(c, a.max_nodes);
     rules = {scene_inputs(spec), a.force};
-    if (!out_dir.empty()) check_replaceable(out_dir + "/results.h5", OutputKind::Results, rules.inputs, rules.force);
+    if (!out_dir.empty()) {  // the study's files in DIR, before the study (its report checks its own folder)
+      check_replaceable(out_dir + "/results.h5", OutputKind::Results, rules.inputs, rules.force);
+      check_replaceable(out_dir + "/bondline_fields.csv", OutputKind::Csv, rules.inputs, rules.force);
+    }
     if (given(c, "eps")) {
       spec.eps = a.eps.values;
       for (double e : spec.eps)
@@ -214,7 +157,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     if (!spec.has_layer())
       throw std::invalid_argument("scene '" + spec.name + "' gives a limit law only ('law'): it has no layer mode to study");
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
-    for (double e : bulk->spec().eps.empty() ? options.eps : bulk->spec().eps) check_layer_mode(*bulk, e);
+    for (double e : scene_study_grid(*bulk, options)) check_layer_mode(*bulk, e);
   } catch (const std::exception& e) {
     return fail("study", e, 2);
   }
@@ -233,6 +176,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
       write_checks(*out, r.checks);
       out->commit();
       std::printf("wrote %s\n", out->path().c_str());
+      report_scene_study(out_dir, options.verbose);  // DIR/report/index.html: the joint drawn
     }
     return failed == 0 ? 0 : 1;
   } catch (const std::invalid_argument& e) {

@@ -1,22 +1,32 @@
 #pragma once
 // S2 and S3 (SPEC §3) on a user's scene file (SPEC §5): the distance between the layer mode at
-// every ε of the scene's grid and the limit mode, its fitted rates, and the largest ε at which
-// the limit law stays within τ of the layer model (bisection on log ε between the samples).
+// every ε of the scene's grid and the limit mode, its fitted rates, the rate from the Cauchy
+// differences of the layer model (where the mesh floor cancels), the mesh floor itself (the
+// distance at a thickness far below the grid, at h, h/2 and h/4 along the bondlines), the peak
+// stresses of every bondline, and the largest ε at which the limit law stays within τ of the
+// layer model (bisection on log ε between the samples).
+//
+// Two kinds of glue (core/interface/glue.h). The paper's family ("layer": λ_ε = ε^γ λ_g): one
+// limit law for every ε; the predicted rate of its (γ, δ) (studies/convergence_rates.md) is
+// checked. An engineer's glue ("glue": fixed E, ν): the same glue at each thickness t of the
+// grid, and the limit law SPEC §1.3 chooses at that t, so one limit scene per thickness; its
+// default grid is its own thickness times 5, 2, 1, 1/2, 1/5, ... 1/100 (those the joint can hold).
 // The distances: studies/tools/scene_distance.h.
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "core/io/h5_writer.h"
-#include "studies/tools/rate_fit.h"
 #include "cases/scene/scene_file_scenes.h"
+#include "core/io/h5_writer.h"
 #include "studies/drivers/table3_study.h"
+#include "studies/tools/bondline_fields.h"
+#include "studies/tools/rate_fit.h"
 
 namespace thinlayer {
 
 struct SceneStudyOptions {
-  std::vector<double> eps = {1e-2, 5e-3, 1e-3, 5e-4, 1e-4};  // the scene's "eps" replaces it
+  std::vector<double> eps = {1e-2, 5e-3, 1e-3, 5e-4, 1e-4};  // the paper family's; the scene's "eps" replaces it
   double tolerance = 1e-10;   // the SPEC residual every scene is solved to
   int threads = 2;            // layer scenes solved at once
   bool verbose = true;
@@ -24,16 +34,22 @@ struct SceneStudyOptions {
   int bisection_steps = 2;
   bool validity = false;      // also S3
   double rate_tolerance = 0.15;  // |p_fit − p_predicted| allowed, as the dovetail's S2 check
+  // The mesh floor: the modes' distance at the thinnest ε of the grid times floor_eps_factor
+  // (its ε part far below the floor; an engineer's glue: at its own thickness, the joint as
+  // glued), at h, h/2, h/4 ... along the bondlines (floor_levels of them; a scene given as
+  // "geometry" with "mesh_size" only; fewer than 2: none).
+  int floor_levels = 3;
+  double floor_eps_factor = 1e-2;
 };
 
 struct SceneSample {
   double eps = 0;
   std::map<std::string, double> e;  // quantity → distance to the limit mode
   int status_diff = 0;              // S nodes whose combined status differs from the limit's
-  bool converged = false;
+  bool converged = false;           // the layer scene (and its limit scene)
   double residual = 0, time_s = 0;
   int iterations = 0;
-  std::string id;
+  std::string id, limit_id;
 };
 
 struct SceneValidityRow {
@@ -44,23 +60,53 @@ struct SceneValidityRow {
   bool converged = true;
 };
 
+// The mesh floor at one element size along the bondlines.
+struct SceneFloorRow {
+  double h = 0;       // mm, mesh_size.interface
+  int S_nodes = 0;    // nodes on every bondline together
+  double eps = 0;     // mm
+  std::map<std::string, double> e;
+  bool converged = false;
+  std::string layer_id, limit_id;
+};
+
+// The peak stresses of one bondline in one scene.
+struct ScenePeak {
+  std::string scene, mode, bondline;
+  double eps = 0, h = 0;  // mm (eps 0: limit mode)
+  BondlinePeaks peaks;
+};
+
 struct SceneStudyResult {
+  std::string family;  // "scaled" (the paper's) or "engineer" (some bondline's glue has fixed moduli)
   std::string limit_id;
   bool limit_converged = false;
   double limit_residual = 0;
   std::vector<SceneSample> samples;  // by decreasing ε
   std::map<std::string, std::optional<PowerLawFit>> fit;
   std::map<std::string, std::optional<FlooredPowerLawFit>> floor_fit;
+  // The layer model's Cauchy differences between neighbouring samples, and the rate they give.
+  std::map<std::string, std::vector<double>> cauchy;
+  std::map<std::string, std::optional<PowerLawFit>> cauchy_fit;
+  std::vector<SceneFloorRow> floor;                                 // by decreasing h
+  std::map<std::string, std::optional<PowerLawFit>> floor_rate;     // the floor's rate in h
+  std::vector<ScenePeak> peaks;
   std::optional<double> p_predicted;  // the Table 2 case with the scene's (γ, δ), if any
   std::vector<SceneValidityRow> validity;
   std::vector<Check> checks;
 };
 
 // Runs S2 (and S3 if options.validity), prints its tables, writes /studies/scene/<name>/ and
-// every scene it solved under /scenes when `out` is given. Checks (ids "scene.<name>.*"): the
-// limit and every layer scene converged; the distance u decreases as ε decreases; where the
-// asymptotics predict a rate for the scene's (γ, δ), the floored rate of u within
-// rate_tolerance of it.
+// every scene it solved under /scenes when `out` is given, and beside it the bondline fields of
+// every scene as CSV (bondline_fields.csv). Checks (ids "scene.<name>.*"): the limit and every
+// layer scene converged; for the paper's family, the distance u decreases as ε decreases and,
+// where the asymptotics predict a rate for the scene's (γ, δ), the rate of u from the Cauchy
+// differences within rate_tolerance of it.
 SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& options, H5Writer* out);
+
+// The thicknesses the study samples (mm, decreasing): the scene's "eps", or for the paper's
+// family options.eps, for an engineer's glue its own thickness times 5, 2, 1, 1/2, 1/5, ..., 1/100
+// (those the joint can hold).
+std::vector<double> scene_study_grid(const SceneFileBulk& bulk, const SceneStudyOptions& options);
 
 }  // namespace thinlayer

@@ -1,7 +1,8 @@
 #pragma once
 // The distance between a scene file's two modes (SPEC §3 S2 on SPEC §5's joints): a layer-mode
 // record against the limit-mode record of the same scene, on the same mesh (the adherents come
-// first in both, in scene order, with the same nodes; the layer is the last body).
+// first in both, in scene order, with the same nodes; the layers are the last bodies). With
+// several bondlines, S is all of them, one after the other.
 //
 // Quantities (relative discrete L² distances, error_norms.h), globally only (a user's geometry
 // has no corners known in advance):

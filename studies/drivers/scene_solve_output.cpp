@@ -1,0 +1,140 @@
+#include "studies/drivers/scene_solve_output.h"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "studies/tools/format.h"
+
+namespace thinlayer {
+
+namespace {
+
+nlohmann::json counts_json(const StatusCount& c) { return {{"gap", c.gap}, {"slide", c.slide}, {"stick", c.stick}}; }
+
+nlohmann::json vector_json(const Eigen::Vector2d& v) { return nlohmann::json::array({v.x(), v.y()}); }
+
+void print_counts(const char* what, const StatusCount& c) {
+  std::printf("  %-9s gap %3d  slide %3d  stick %3d\n", what, c.gap, c.slide, c.stick);
+}
+
+}  // namespace
+
+void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, double eps, const SceneFileScene& s) {
+  const SceneSpec& spec = bulk.spec();
+  std::printf("scene %s (%s), %s mode%s; units %s (stresses in %s)\n", spec.name.c_str(), spec.file.c_str(), mode.c_str(),
+              mode == "layer" && eps > 0 ? (" at eps " + plain(eps) + " mm").c_str() : "", spec.units.name().c_str(),
+              spec.units.stress().c_str());
+  for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
+    const SceneInterfaceSpec& b = spec.interfaces[i];
+    const SceneBondline& state = s.bondlines.at(i);
+    std::printf("  %s (plus %s, minus %s; faces %s/%s): limit law %s, lambda_bar %g, mu_bar %g %s", b.label().c_str(),
+                b.plus.c_str(), b.minus.c_str(), to_string(b.faces.plus), to_string(b.faces.minus),
+                state.law.describe().c_str(), state.law.lambda_bar, state.law.mu_bar, spec.units.stiffness().c_str());
+    if (!state.law.bilateral) std::printf(", f %g", state.law.friction);
+    if (b.glue)
+      std::printf("; glue E %g, nu %g, t %g mm (law by SPEC 1.3 at %g mm, L = %g mm)", b.glue->E, b.glue->nu,
+                  b.glue->thickness, eps > 0 ? eps : b.glue->thickness, bulk.characteristic_length());
+    if (state.thickness > 0)
+      std::printf("; layer %g mm, lambda_eps %g, mu_eps %g", state.thickness, state.moduli.lambda, state.moduli.mu);
+    std::printf("\n");
+  }
+  std::printf("  meshes:");
+  for (std::size_t b = 0; b < spec.bodies.size(); ++b)
+    std::printf(" %s %d nodes%s", spec.bodies[b].name.c_str(), bulk.meshes().bodies[b].num_nodes(),
+                bulk.model().bodies[b].floating ? " (held by its bondlines alone)" : "");
+  int nodes = 0;
+  for (const SceneInterfaceNodes& S : bulk.interface_nodes()) nodes += static_cast<int>(S.plus.size());
+  std::printf("; %d nodes on S; meshed in %.3f s\n", nodes, bulk.meshes().meshing_time_s);
+  if (mode == "limit") {
+    print_counts("S", s.limit);
+  } else {
+    const MeshQuality& q = s.layer_quality;
+    if (q.cells > 0)
+      std::printf("  layer: %d Q1 cells, angles %.1f..%.1f deg, aspect ratio up to %.3g\n", q.cells, q.min_angle_deg,
+                  q.max_angle_deg, q.max_aspect_ratio);
+    print_counts("S+", s.counts.plus_face);
+    print_counts("S-", s.counts.minus_face);
+    print_counts("combined", s.counts.combined);
+  }
+  const SolveReport& r = s.report;
+  const std::string outcome = r.converged ? "converged" : std::string("NOT converged (") + to_string(r.stop_cause) + ")";
+  std::printf("  %s after %d iterations; residual %.3e (interface %.3e, bulk %.3e), tolerance %.0e\n", outcome.c_str(),
+              r.iterations, r.residual.value(), r.residual.interface, r.residual.bulk, r.tolerance);
+  std::printf("  time: solve %.4f s, setup %.4f s\n", r.wall_time_s, s.record.numbers.at("setup_time_s"));
+  const std::string force = spec.units.force + "/mm";
+  std::printf("  reactions (%s):", force.c_str());
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (const auto& [name, R] : s.record.reactions) {
+    std::printf(" %s (%.6g, %.6g)", name.c_str(), R.x(), R.y());
+    sum += R;
+  }
+  std::printf("\n");
+  if (!s.loads.empty()) {
+    std::printf("  loads (%s):", force.c_str());
+    for (const auto& [name, F] : s.loads) {
+      std::printf(" %s (%.6g, %.6g)", name.c_str(), F.x(), F.y());
+      sum += F;
+    }
+    std::printf("\n");
+  }
+  std::printf("  reactions + loads = (%.3g, %.3g) %s\n", sum.x(), sum.y(), force.c_str());
+}
+
+std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene_file, const std::string& mode,
+                             const SceneFileScene& s, const std::string& out, const std::string& vtu) {
+  const SceneRecord& record = s.record;
+  const SolveReport& report = s.report;
+  nlohmann::json counts;
+  for (const InterfaceFields& f : record.interfaces) counts[f.name] = counts_json(f.counts());
+  if (!record.combined_status.empty()) {
+    std::vector<NodeStatus> combined;
+    for (int v : record.combined_status) combined.push_back(static_cast<NodeStatus>(v));
+    counts["combined"] = counts_json(count_statuses(combined));
+  }
+  nlohmann::json reactions = nlohmann::json::object(), loads = nlohmann::json::object();
+  for (const auto& [name, R] : record.reactions) reactions[name] = vector_json(R);
+  for (const auto& [name, F] : s.loads) loads[name] = vector_json(F);
+  const nlohmann::json j = {
+      {"scene", record.id},
+      {"case", record.text.at("case")},
+      {"scene_file", scene_file},
+      {"mode", mode},
+      {"law_case", record.text.at("law_case")},
+      {"units", bulk.spec().units.name()},
+      {"solver", report.solver},
+      {"converged", report.converged},
+      {"stop_cause", to_string(report.stop_cause)},
+      {"iterations", report.iterations},
+      {"residual", {{"value", report.residual.value()}, {"interface", report.residual.interface},
+                    {"bulk", report.residual.bulk}, {"tolerance", report.tolerance}}},
+      {"counts", counts},
+      {"carries_load", s.carries_load},
+      {"reactions", reactions},
+      {"loads", loads},
+      {"force_units", bulk.spec().units.force + "/mm"},
+      {"times_s", {{"solve", report.wall_time_s}, {"setup", record.numbers.at("setup_time_s")},
+                   {"meshing", record.numbers.at("meshing_time_s")}}},
+      {"out", out.empty() ? nullptr : nlohmann::json(out)},
+      {"vtu", vtu.empty() ? nullptr : nlohmann::json(vtu)},
+  };
+  return j.dump();
+}
+
+void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps) {
+  if (mode == "layer") {
+    if (eps == 0 && !bulk.spec().engineer_glue_only())
+      throw std::invalid_argument("layer mode needs --eps (the scene's layers are the paper's family, which has no thickness of its own)");
+    check_layer_mode(bulk, eps);
+  } else if (eps > 0 && !bulk.has_engineer_glue()) {
+    throw std::invalid_argument("--eps applies to the layer mode only (and, in limit mode, to an engineer's glue, whose law depends on its thickness)");
+  }
+}
+
+std::string no_load_warning(const SceneFileScene& s) {
+  if (s.carries_load) return "";
+  return "warning: every bondline node is open (gap): the joint carries no load across its bondlines (a glued joint "
+         "needs \"faces\": {\"plus\": \"bonded\", \"minus\": \"bonded\"})";
+}
+
+}  // namespace thinlayer

@@ -1,0 +1,27 @@
+#pragma once
+// What `thinlayer solve --scene` prints (studies/cli/command_scene.cpp calls these): the text
+// summary of one scene (every bondline's law and statuses, the reactions with the applied loads
+// beside them), its one-line JSON (--json: counts, residual, reactions, loads, whether the joint
+// carries a load) and the warning of a joint that carries none (every bondline node open).
+#include <string>
+
+#include "cases/scene/scene_file_scenes.h"
+
+namespace thinlayer {
+
+// mode: "limit" or "layer"; eps: the asked thickness (0: each glue's own).
+void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, double eps, const SceneFileScene& scene);
+
+std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene_file, const std::string& mode,
+                             const SceneFileScene& scene, const std::string& out, const std::string& vtu);
+
+// The thickness a `solve --scene` asks for (0: none given), checked against the scene: the layer
+// mode needs one (--eps, or an engineer's glue's own) the joint can hold; in limit mode --eps
+// chooses an engineer's glue's law (SPEC §1.3 at that thickness), and means nothing otherwise.
+// Throws std::invalid_argument.
+void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps);
+
+// "" when the joint carries a load; else one line saying that every bondline node is open.
+std::string no_load_warning(const SceneFileScene& scene);
+
+}  // namespace thinlayer

@@ -1,0 +1,328 @@
+#include "studies/drivers/scene_study_output.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "core/io/output_target.h"
+#include "studies/tools/format.h"
+#include "studies/tools/scene_distance.h"
+
+namespace thinlayer {
+
+namespace {
+
+const std::map<std::string, std::string>& quantity_descriptions() {
+  static const std::map<std::string, std::string> d = {
+      {"u", "the adherents' nodal displacements, relative to the largest |u| of the limit mode"},
+      {"jump_N", "[u]_N across the whole bondline (from the adherents' nodes), relative to the largest |u|"},
+      {"jump_T", "[u]_T across the whole bondline (from the adherents' nodes), relative to the largest |u|"},
+      {"sigma_N", "sigma_N on the plus adherent's face, relative to the largest |sigma| of the limit mode on S"},
+      {"sigma_T", "sigma_T on the plus adherent's face, relative to the largest |sigma| of the limit mode on S"},
+  };
+  return d;
+}
+
+template <typename T>
+void put(H5Writer& out, const std::string& path, const std::vector<T>& values, const std::string& units,
+         const std::string& description) {
+  out.dataset(path, values);
+  if (!units.empty()) out.attr(path, "units", units);
+  out.attr(path, "description", description);
+}
+
+std::string verdict_text(const SceneValidityRow& v) {
+  if (v.status == "at_least") return ">= " + sci(v.eps_max, 1);
+  if (v.status == "below_range") return "< " + sci(v.eps_max, 1);
+  return sci(v.eps_max, 2);
+}
+
+// The distance of quantity q in every row (samples or floor levels), in order.
+template <typename Row>
+std::vector<double> column(const std::vector<Row>& rows, const std::string& q) {
+  std::vector<double> e;
+  for (const Row& row : rows) e.push_back(row.e.at(q));
+  return e;
+}
+
+void write_fits(H5Writer& out, const std::string& g, const std::string& q, const std::optional<PowerLawFit>& f,
+                const std::string& prefix) {
+  out.attr(g, prefix + q, f ? f->p : 0.0);
+  out.attr(g, prefix + q + "_stderr", f ? f->p_stderr : 0.0);
+  out.attr(g, "fitted_" + q, f ? 1 : 0);
+}
+
+}  // namespace
+
+void print_scene_study(const SceneFileBulk& bulk, const SceneStudyResult& r, const SceneStudyOptions& options) {
+  const SceneSpec& spec = bulk.spec();
+  std::printf("\nScene %s (%s): convergence (S2), layer mode at each eps (mm) against the limit law\n", spec.name.c_str(),
+              spec.file.c_str());
+  for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
+    const SceneInterfaceSpec& b = spec.interfaces[i];
+    const InterfaceLaw law = bulk.limit_law(static_cast<int>(i), r.samples.front().eps);
+    std::printf("  %s (faces %s/%s): %s", b.label().c_str(), to_string(b.faces.plus), to_string(b.faces.minus),
+                law.describe().c_str());
+    if (b.glue)
+      std::printf(", an engineer's glue E %g, nu %g, t %g mm: its law at each eps by SPEC 1.3 (L = %g mm)", b.glue->E,
+                  b.glue->nu, b.glue->thickness, bulk.characteristic_length());
+    else
+      std::printf(" (lambda_bar %g, mu_bar %g %s, f %g)", law.lambda_bar, law.mu_bar, spec.units.stiffness().c_str(),
+                  law.friction);
+    std::printf("\n");
+  }
+  std::printf("  relative L2 distances; diff: S nodes whose combined status differs; limit mode %s, residual %s;\n"
+              "  scenes solved to residual %g\n",
+              r.limit_converged ? "converged" : "NOT converged", sci(r.limit_residual, 1).c_str(), options.tolerance);
+  std::printf("  %-8s", "eps");
+  for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", q.c_str());
+  std::printf(" %5s %5s %9s %8s\n", "diff", "it", "residual", "time[s]");
+  for (const SceneSample& s : r.samples) {
+    std::printf("  %-8g", s.eps);
+    for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", sci(s.e.at(q), 2).c_str());
+    std::printf(" %5d %5d %9s %8.2f%s\n", s.status_diff, s.iterations, sci(s.residual, 1).c_str(), s.time_s,
+                s.converged ? "" : "  NOT converged");
+  }
+  print_fit_rows(scene_distance_quantities(), r.fit, r.floor_fit, 8, 10);
+  std::printf("  %-8s", "p Cauchy");
+  for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", rate_text(r.cauchy_fit.at(q)).c_str());
+  std::printf("   (the layer model's differences between neighbouring eps: the mesh floor cancels)\n");
+  if (r.p_predicted)
+    std::printf("  predicted p = %g (the Table 2 case with the scene's gamma, delta; studies/convergence_rates.md)\n",
+                *r.p_predicted);
+}
+
+void print_scene_floor(const SceneStudyResult& r) {
+  if (r.floor.empty()) return;
+  std::printf("\nMesh floor: the modes' distance at eps %g mm (%s), the scene re-meshed\n"
+              "with the element size h along the bondlines halved (and far from them)\n",
+              r.floor.front().eps, r.family == "engineer" ? "the glue's own thickness" : "its eps part far below");
+  std::printf("  %-8s %6s", "h (mm)", "nodes");
+  for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", q.c_str());
+  std::printf("\n");
+  for (const SceneFloorRow& row : r.floor) {
+    std::printf("  %-8g %6d", row.h, row.S_nodes);
+    for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", sci(row.e.at(q), 2).c_str());
+    std::printf("%s\n", row.converged ? "" : "  NOT converged");
+  }
+  std::printf("  %-15s", "rate in h");
+  for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", rate_text(r.floor_rate.at(q)).c_str());
+  std::printf("\n");
+}
+
+void print_scene_validity(const SceneStudyResult& r, int steps) {
+  std::printf("\nThickness validity (S3): the largest eps (mm) at which the limit law stays within tau of the layer\n"
+              "model (distance of the adherents' displacements, 'u'), %d bisection steps on log eps between samples\n\n",
+              steps);
+  std::printf("%-5s | %-11s %-10s %-11s %-11s\n", "tau", "eps_max", "error", "first eps>", "status");
+  for (const SceneValidityRow& v : r.validity)
+    std::printf("%-5g | %-11s %-10s %-11s %-11s%s\n", v.tau, verdict_text(v).c_str(), sci(v.error_at_eps_max, 2).c_str(),
+                v.status == "found" ? sci(v.eps_beyond, 2).c_str() : "-", v.status.c_str(),
+                v.converged ? "" : "  (a scene did not converge)");
+  if (!r.floor.empty() && r.family == "engineer")
+    std::printf("On the mesh: the distance u at the glue's own thickness %g mm is %s at h %g mm and %s at h %g mm:\n"
+                "a verdict changes with the mesh where tau is within that change\n",
+                r.floor.front().eps, sci(r.floor.front().e.at("u"), 2).c_str(), r.floor.front().h,
+                sci(r.floor.back().e.at("u"), 2).c_str(), r.floor.back().h);
+  else if (!r.floor.empty())
+    std::printf("The mesh floor of u on this mesh (h %g mm): %s; a tau below it cannot be resolved here (refine\n"
+                "mesh_size.interface; at h %g mm it is %s)\n",
+                r.floor.front().h, sci(r.floor.front().e.at("u"), 2).c_str(), r.floor.back().h,
+                sci(r.floor.back().e.at("u"), 2).c_str());
+}
+
+std::string bondline_fields_csv(const std::vector<ScenesOnBulk>& scenes) {
+  std::ostringstream csv;
+  csv.precision(10);
+  std::string units = "daN";
+  if (!scenes.empty()) units = scenes.front().bulk->spec().units.name();
+  csv << "# thinlayer bondline fields (SPEC 5): one row per node of each bondline of each scene\n"
+      << "# units " << units << ": s, x, y, eps, h and the jumps in mm, the stresses in "
+      << (scenes.empty() ? "daN/mm^2" : scenes.front().bulk->spec().units.stress()) << "\n"
+      << "# s: arc length along the bondline from its first node; x, y: the limit mode's position; sigma_N, sigma_T on\n"
+      << "# the plus adherent's face (sigma_N > 0 tension: peel); jump_N, jump_T across the whole bondline (in layer mode\n"
+      << "# across the layer); status 0 gap, 1 slide, 2 stick (layer mode: combined through both faces); eps 0: limit mode\n"
+      << "scene,mode,eps,h,bondline,node,s,x,y,sigma_N,sigma_T,jump_N,jump_T,status\n";
+  for (const ScenesOnBulk& s : scenes) {
+    const SceneRecord& r = s.scene->record;
+    const std::string mode = r.text.at("mode");
+    const double eps = mode == "layer" ? r.numbers.at("eps") : 0.0;
+    for (const BondlineField& f : bondline_fields(*s.bulk, r))
+      for (std::size_t k = 0; k < f.s.size(); ++k)
+        csv << s.id << "," << mode << "," << eps << "," << s.h << "," << f.bondline << "," << k << "," << f.s[k] << ","
+            << f.x[k] << "," << f.y[k] << "," << f.sigma_N[k] << "," << f.sigma_T[k] << "," << f.jump_N[k] << ","
+            << f.jump_T[k] << "," << f.status[k] << "\n";
+  }
+  return csv.str();
+}
+
+void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStudyResult& r, const SceneStudyOptions& o,
+                       const std::vector<const SceneFileScene*>& scenes, const std::vector<FloorScenes>& floor) {
+  const SceneSpec& spec = bulk.spec();
+  const std::string g = "/studies/scene/" + spec.name;
+  const std::string stress = spec.units.stress();
+  out.attr(g, "description",
+           "S2/S3 on a scene file: the layer mode at each eps against the limit law (" +
+               std::string(r.family == "engineer" ? "an engineer's glue: the same glue at each thickness, its law by SPEC 1.3 "
+                                                    "at that thickness"
+                                                  : "the paper's family: one limit law") +
+               "), the Cauchy differences, the mesh floor, the peak stresses and the thickness validity");
+  out.attr(g, "family", r.family);
+  out.attr(g, "scene_file", spec.file);
+  out.attr(g, "units", spec.units.name());
+  out.attr(g, "limit_scene", r.limit_id);
+  out.attr(g, "tolerance", o.tolerance);
+  out.attr(g, "p_predicted", r.p_predicted ? *r.p_predicted : -1.0);
+  std::string cases;
+  for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
+    if (i) cases += ',';
+    cases += bulk.limit_law(static_cast<int>(i), r.samples.front().eps).table1_case();
+  }
+  out.attr(g, "table1_case", cases);
+  out.attr(g, "characteristic_length", bulk.characteristic_length());
+  out.attr(g, "characteristic_length_units", std::string("mm"));
+  out.attr(g, "h_interface", spec.h_interface.value_or(0.0));
+  out.attr(g, "h_interface_units", std::string("mm"));
+
+  std::vector<double> eps;
+  std::vector<int> diff, converged;
+  std::vector<std::string> ids, limit_ids;
+  for (const SceneSample& s : r.samples) {
+    eps.push_back(s.eps);
+    diff.push_back(s.status_diff);
+    converged.push_back(s.converged ? 1 : 0);
+    ids.push_back(s.id);
+    limit_ids.push_back(s.limit_id);
+  }
+  put(out, g + "/eps", eps, "mm", "the layer's thickness of each sample (every layer bondline alike)");
+  put(out, g + "/status_diff", diff, "", "nodes of S whose combined status differs from the limit mode's");
+  put(out, g + "/converged", converged, "", "1: the layer scene and its limit scene reached the tolerance");
+  put(out, g + "/layer_scene", ids, "", "the layer scene of each sample (/scenes/<id>)");
+  put(out, g + "/limit_scene", limit_ids, "", "the limit scene each sample is measured against (/scenes/<id>)");
+  for (const std::string& q : scene_distance_quantities()) {
+    put(out, g + "/e_" + q, column(r.samples, q), "1 (relative)", "relative discrete L2 distance of " + quantity_descriptions().at(q));
+    write_fits(out, g, q, r.fit.at(q), "p_");
+    const auto& ff = r.floor_fit.at(q);
+    out.attr(g, "p_floor_" + q, ff ? ff->p : 0.0);
+    out.attr(g, "floor_" + q, ff ? ff->floor : 0.0);
+    out.attr(g, "fitted_floor_" + q, ff ? 1 : 0);
+  }
+
+  const std::string c = g + "/cauchy";
+  put(out, c + "/eps", std::vector<double>(eps.begin(), eps.end() - 1), "mm",
+      "the thicker eps of each pair of neighbouring samples");
+  for (const std::string& q : scene_distance_quantities()) {
+    put(out, c + "/d_" + q, r.cauchy.at(q), "1 (relative)",
+        "distance between the layer model at eps and at the next (thinner) sample: " + quantity_descriptions().at(q));
+    write_fits(out, c, q, r.cauchy_fit.at(q), "p_");
+  }
+  out.attr(c, "description", "d_k = C eps_k^p (1 - (eps_k+1/eps_k)^p): the rate p with the mesh floor cancelled");
+
+  if (!r.floor.empty()) {
+    const std::string f = g + "/floor";
+    std::vector<double> h, feps;
+    std::vector<int> nodes, fconv;
+    std::vector<std::string> layer_ids, limit_ids_f;
+    for (const SceneFloorRow& row : r.floor) {
+      h.push_back(row.h);
+      feps.push_back(row.eps);
+      nodes.push_back(row.S_nodes);
+      fconv.push_back(row.converged ? 1 : 0);
+      layer_ids.push_back(row.layer_id);
+      limit_ids_f.push_back(row.limit_id);
+    }
+    put(out, f + "/h", h, "mm", "the element size along the bondlines (mesh_size.interface; far halved alike)");
+    put(out, f + "/eps", feps, "mm",
+        r.family == "engineer" ? "the layer's thickness: the glue's own (the joint as glued)"
+                               : "the layer's thickness: the thinnest sample times floor_eps_factor");
+    put(out, f + "/S_nodes", nodes, "", "nodes on every bondline together");
+    put(out, f + "/converged", fconv, "", "1: both scenes reached the tolerance");
+    put(out, f + "/layer_scene", layer_ids, "", "the layer scene at h (/scenes/<id>)");
+    put(out, f + "/limit_scene", limit_ids_f, "", "the limit scene at h (/scenes/<id>)");
+    for (const std::string& q : scene_distance_quantities()) {
+      put(out, f + "/floor_" + q, column(r.floor, q), "1 (relative)", "the mesh floor: distance of " + quantity_descriptions().at(q));
+      write_fits(out, f, q, r.floor_rate.at(q), "rate_");
+    }
+    out.attr(f, "floor_eps_factor", o.floor_eps_factor);
+    out.attr(f, "description", "the modes' distance far below the eps grid, at h, h/2, h/4: a mesh effect, not a modelling one");
+  }
+
+  {
+    const std::string p = g + "/peaks";
+    std::vector<std::string> scene, mode, bondline;
+    std::vector<double> peps, ph, peel, s_peel, shear, s_shear, compression;
+    for (const ScenePeak& k : r.peaks) {
+      scene.push_back(k.scene);
+      mode.push_back(k.mode);
+      bondline.push_back(k.bondline);
+      peps.push_back(k.eps);
+      ph.push_back(k.h);
+      peel.push_back(k.peaks.peel);
+      s_peel.push_back(k.peaks.s_peel);
+      shear.push_back(k.peaks.shear);
+      s_shear.push_back(k.peaks.s_shear);
+      compression.push_back(k.peaks.compression);
+    }
+    put(out, p + "/scene", scene, "", "the scene (/scenes/<id>)");
+    put(out, p + "/mode", mode, "", "limit or layer");
+    put(out, p + "/bondline", bondline, "", "the bondline's group");
+    put(out, p + "/eps", peps, "mm", "the layer's thickness (0: limit mode)");
+    put(out, p + "/h", ph, "mm", "the element size along the bondlines (mesh_size.interface)");
+    put(out, p + "/peel", peel, stress, "the largest tension sigma_N > 0 on the plus adherent's face (0 if none)");
+    put(out, p + "/s_peel", s_peel, "mm", "where: arc length along the bondline");
+    put(out, p + "/shear", shear, stress, "the largest |sigma_T| on the plus adherent's face");
+    put(out, p + "/s_shear", s_shear, "mm", "where: arc length along the bondline");
+    put(out, p + "/compression", compression, stress, "the largest compression -sigma_N > 0 (0 if none)");
+  }
+
+  if (!r.validity.empty()) {
+    const std::string v = g + "/validity";
+    std::vector<double> tau, eps_max, error, beyond;
+    std::vector<std::string> status;
+    std::vector<int> steps, vconv;
+    for (const SceneValidityRow& row : r.validity) {
+      tau.push_back(row.tau);
+      status.push_back(row.status);
+      eps_max.push_back(row.eps_max);
+      error.push_back(row.error_at_eps_max);
+      beyond.push_back(row.eps_beyond);
+      steps.push_back(row.bisection_steps);
+      vconv.push_back(row.converged ? 1 : 0);
+    }
+    put(out, v + "/tau", tau, "1 (relative)", "the tolerance on the distance u");
+    put(out, v + "/status", status, "", "found: by bisection; at_least: within tau at every sample (a lower bound); "
+                                          "below_range: not within tau even at the thinnest sample");
+    put(out, v + "/eps_max", eps_max, "mm", "the largest eps at which the limit law stays within tau (u)");
+    put(out, v + "/error_at_eps_max", error, "1 (relative)", "the distance u at eps_max");
+    put(out, v + "/eps_beyond", beyond, "mm", "the smallest eps known beyond tau (status found)");
+    put(out, v + "/bisection_steps", steps, "", "bisection steps on log eps");
+    put(out, v + "/converged", vconv, "", "1: every scene behind the verdict reached the tolerance");
+    if (!r.floor.empty()) {
+      out.attr(v, "mesh_floor_u", r.floor.front().e.at("u"));
+      out.attr(v, "mesh_floor_u_finest", r.floor.back().e.at("u"));
+      out.attr(v, "mesh_floor_h", r.floor.front().h);
+      out.attr(v, "mesh_floor_h_finest", r.floor.back().h);
+      out.attr(v, "mesh_floor_note", std::string("a tau below the mesh floor of u cannot be resolved on that mesh: the "
+                                                 "verdict there measures the mesh, not the model"));
+    }
+  }
+
+  std::set<std::string> written;  // two brackets may bisect at the same ε
+  std::vector<ScenesOnBulk> csv;
+  for (const SceneFileScene* s : scenes)
+    if (written.insert(s->record.id).second) {
+      write_scene_file_scene(out, *s, bulk);
+      csv.push_back({&bulk, s, s->record.id, spec.h_interface.value_or(0.0)});
+    }
+  for (const FloorScenes& f : floor)
+    for (const SceneFileScene* s : {&f.limit, &f.layer})
+      if (written.insert(s->record.id).second) {
+        write_scene_file_scene(out, *s, *f.bulk);
+        csv.push_back({f.bulk.get(), s, s->record.id, f.bulk->spec().h_interface.value_or(0.0)});
+      }
+  const std::string folder = std::filesystem::path(out.path()).parent_path().string();
+  write_text_atomically((folder.empty() ? std::string(".") : folder) + "/bondline_fields.csv", bondline_fields_csv(csv));
+}
+
+}  // namespace thinlayer
