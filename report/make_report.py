@@ -21,7 +21,6 @@ import re
 import shutil
 import signal
 import sys
-import tempfile
 import time
 import traceback
 
@@ -189,12 +188,15 @@ def make_report(results_path, out_dir):
         check_input_is_safe(results_path, out_dir)
         previous = previous_figures(os.path.join(out_dir, "index.html"))
         created = not os.path.lexists(out_dir)
+        # The half-built report's name is known before it exists, so that a signal arriving just
+        # after it is made (the hostile matrix kills the report as soon as it appears) finds it.
+        building = os.path.join(out_dir, f".report-building-{os.getpid()}-{time.monotonic_ns()}")
         try:
-            os.makedirs(out_dir, exist_ok=True)
-            building = tempfile.mkdtemp(prefix=".report-building-", dir=out_dir)
-        except OSError as e:
-            raise ReportError(f"cannot write in {out_dir}: {e.strerror or e}") from None
-        try:
+            try:
+                os.makedirs(out_dir, exist_ok=True)
+                os.mkdir(building)
+            except OSError as e:
+                raise ReportError(f"cannot write in {out_dir}: {e.strerror or e}") from None
             write_report(f, results_path, building)
             install(building, out_dir, previous)
         except BaseException:

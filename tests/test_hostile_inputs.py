@@ -24,6 +24,8 @@ import time
 import h5py
 import numpy as np
 
+from process_session import run_in_session
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 MAKE_REPORT = os.path.join(HERE, "..", "report", "make_report.py")
 CHEAP = "--case bar --row 1 --nx 8 --ny 8"  # a limit-mode bar that solves in milliseconds
@@ -70,8 +72,13 @@ def user_folder():
     return folder
 
 
+survivors = []  # processes a run left behind, per case (checked by refused())
+
+
 def run(argv, folder, timeout=120):
-    return subprocess.run(argv, cwd=folder, capture_output=True, text=True, timeout=timeout)
+    """The run in its own session, so that whatever it started can be found after it."""
+    r, survivors[:] = run_in_session(argv, folder, timeout)
+    return r
 
 
 def check(name, condition, detail=""):
@@ -96,6 +103,7 @@ def refused(name, args, message, prefix=None, status=2, report=False):
     check(name, bool(lines) and lines[0].startswith(prefix) and message in lines[0],
           f"expected {prefix!r} and {message!r} in {r.stderr!r}")
     check(name, snapshot(folder) == before, "the folder changed")
+    check(name, not survivors, f"processes {survivors} outlived the run")
     print(f"case {name}: {' '.join(args)!r} -> exit {status}, '{message}', files unchanged")
     return folder
 
@@ -175,6 +183,7 @@ def refused_with_setup(name, setup, args, message, report=False):
     check(name, r.returncode == 2, f"exit {r.returncode}; stderr {r.stderr!r}")
     check(name, len(lines) == 1 and message in lines[0], f"expected one line with {message!r}: {r.stderr!r}")
     check(name, snapshot(folder) == before, "the folder changed")
+    check(name, not survivors, f"processes {survivors} outlived the run")
     print(f"case {name}: {' '.join(args)!r} -> exit 2, '{message}', files unchanged")
 
 
@@ -201,6 +210,112 @@ def prepared_refusals():
                        "not a report this script wrote", report=True)
     refused_with_setup("report on a missing file", lambda folder: None, ["missing.h5", "out"], "no such file",
                        report=True)
+
+
+def issue26_refusals():
+    """Issue 26: the command line declared in CLI11 keeps every rule; outputs never replace a file
+    thinlayer did not write; loads that would overflow are refused before the solve."""
+    refused("--opt=value: an option as the value", solve(["--out=--quiet"]), "--out needs a value, got the option '--quiet'")
+    refused("--opt=value: hex", layer(["--eps=0x10"]), "not a decimal number: '0x10'")
+    refused("--opt=value given twice", solve(["--out=a.h5", "--out", "b.h5"]), "--out is given 2 times")
+    refused("a flag given a value", solve(["--json=1"]), "--json takes no value")
+    refused("an empty value", solve(["--out="]), "--out: empty value")
+    refused("an octal-looking integer is decimal, and checked", ["solve", "--case", "bar", "--row", "07"], "unknown Table 3 row 7")
+    refused("an empty item in a list", ["study", "dovetail", "--eps", "1e-3,,1e-4"], "not a decimal number: ''")
+    refused("--load-scale 1e308 (overflow up front)", solve(["--load-scale", "1e308"]), "overflow the solve")
+    refused("--load-scale -1e200", solve(["--load-scale", "-1e200"]), "overflow the solve")
+    refused("--max-nodes 0", ["solve", "--scene", "x.json", "--max-nodes", "0"], "--max-nodes must be >= 1")
+    refused("--max-nodes on the bar", solve(["--max-nodes", "10"]), "--max-nodes applies to a scene file (--scene) only")
+    refused("--out onto the user's notes", solve(["--out", "notes.txt"]), "notes.txt': it exists and is not a thinlayer results")
+    refused("--vtu onto the user's notes", solve(["--vtu", "notes.txt"]), "is not a VTU file thinlayer wrote")
+    refused("--vtu onto a results file", solve(["--vtu", "previous.h5"]), "is not a VTU file thinlayer wrote")
+    refused("--out onto a CSV of the user's", solve(["--out", "sub/data.csv"]), "is not a thinlayer results file")
+
+    def foreign_h5(folder):
+        with h5py.File(os.path.join(folder, "foreign.h5"), "w") as f:
+            f["data"] = [1, 2, 3]
+    refused_with_setup("--out onto another tool's HDF5", foreign_h5, solve(["--out", "foreign.h5"]), "not a thinlayer results file")
+
+    def text_results(folder):
+        with open(os.path.join(folder, "study", "results.h5"), "w") as f:
+            f.write("not HDF5\n")
+    refused_with_setup("study --out DIR holding a text results.h5", text_results, ["study", "thresholds", "--out", "study"],
+                       "study/results.h5': it exists and is not a thinlayer results file")
+
+    def user_summary(folder):
+        with open(os.path.join(folder, "study", "summary.json"), "w") as f:
+            f.write('{"my": "summary"}\n')
+    refused_with_setup("verify --out DIR holding the user's summary.json", user_summary, ["verify", "--out", "study"],
+                       "summary.json': it exists and is not a summary.json thinlayer wrote")
+
+
+def forced_and_own_outputs():
+    """--force replaces a file thinlayer did not write; without it, thinlayer's own files are replaced."""
+    folder = user_folder()
+    r = run([THINLAYER, *solve(["--out", "notes.txt", "--force"])], folder)
+    check("--force replaces the user's file", r.returncode == 0 and h5py.is_hdf5(os.path.join(folder, "notes.txt")), r.stderr)
+    r = run([THINLAYER, *solve(["--vtu", "scene.vtu"])], folder)
+    r2 = run([THINLAYER, *solve(["--vtu", "scene.vtu", "--friction", "0.5"])], folder)
+    check("a VTU thinlayer wrote is replaced without --force", r.returncode == 0 and r2.returncode == 0, r.stderr + r2.stderr)
+    print("case --force and thinlayer's own outputs: replaced; a foreign file only with --force")
+
+
+def tiny_filesystem():
+    """A 64 KB tmpfs holding an earlier result (root only: mount)."""
+    folder = tempfile.mkdtemp(prefix="thinlayer-tmpfs-")
+    folders.append(folder)
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", folder], capture_output=True).returncode != 0:
+        return None
+    return folder
+
+
+def disk_full_cases():
+    """SPEC §4: a full disk is exit 2 with one line, never a crash (it was exit 139 and HDF5's text), and
+    the earlier result survives."""
+    if os.geteuid() != 0:
+        print("SKIP disk-full cases: mounting a small tmpfs needs root")
+        return
+    lap = os.path.join(HERE, "..", "cases", "lap_joint", "lap_joint.json")
+    cases = [("solve --out", solve(["--out", "{d}/previous.h5"]), "{d}/previous.h5"),
+             ("solve --vtu", solve(["--vtu", "{d}/previous.vtu"]), "{d}/previous.vtu"),
+             ("solve --scene --out", ["solve", "--scene", lap, "--out", "{d}/previous.h5"], "{d}/previous.h5"),
+             ("study table3 --out", ["study", "table3", "--quick", "--quiet", "--out", "{d}"], "{d}/results.h5"),
+             ("study validity --scene --out", ["study", "validity", "--scene", lap, "--quiet", "--out", "{d}"], "{d}/results.h5"),
+             ("study validity --scene --out NEW (no empty folder left)",
+              ["study", "validity", "--scene", lap, "--quiet", "--out", "{d}/NEW"], "{d}/NEW/results.h5")]
+    for name, args, target in cases:
+        d = tiny_filesystem()
+        if d is None:
+            print("SKIP disk-full cases: cannot mount a tmpfs here")
+            return
+        try:
+            seed = run([THINLAYER, *solve(["--out", f"{d}/previous.h5", "--vtu", f"{d}/previous.vtu"])], d)
+            check(f"disk full, {name}: an earlier result", seed.returncode == 0, seed.stderr)
+            before = snapshot(d)
+            r = run([THINLAYER, *[a.format(d=d) for a in args]], d)
+            lines = r.stderr.strip().splitlines()
+            check(f"disk full, {name}", r.returncode == 2, f"exit {r.returncode}: {r.stderr!r}")
+            check(f"disk full, {name}", len(lines) == 1 and "No space left on device" in lines[0], repr(r.stderr))
+            check(f"disk full, {name}", snapshot(d) == before, "the earlier result or the folder changed")
+            check(f"disk full, {name}", not survivors, str(survivors))
+            print(f"case disk full, {name}: exit 2, {lines[0] if lines else ''!r}, earlier result intact")
+        finally:
+            subprocess.run(["umount", d], capture_output=True)
+    mpirun = shutil.which("mpirun")
+    d = tiny_filesystem()
+    if mpirun and d:
+        try:
+            run([THINLAYER, "study", "table3", "--quick", "--quiet", "--out", d], d)  # an earlier result, if it fits
+            before = snapshot(d)
+            r = run([mpirun, "--oversubscribe", "--allow-run-as-root", "-n", "2", THINLAYER, "study", "table3", "--quick",
+                     "--quiet", "--out", d], d)
+            ours = [line for line in r.stderr.splitlines() if line.startswith("thinlayer")]
+            check("disk full under mpirun -n 2", r.returncode == 2, f"exit {r.returncode}: {r.stderr!r}")
+            check("disk full under mpirun -n 2", len(ours) == 1 and "No space left on device" in ours[0], repr(r.stderr))
+            check("disk full under mpirun -n 2", snapshot(d) == before, "the folder changed")
+            print(f"case disk full under mpirun -n 2 study table3: exit 2, {ours[0] if ours else ''!r}")
+        finally:
+            subprocess.run(["umount", d], capture_output=True)
 
 
 def written_cases():
@@ -334,6 +449,9 @@ def main(argv):
     try:
         refused_inputs()
         prepared_refusals()
+        issue26_refusals()
+        forced_and_own_outputs()
+        disk_full_cases()
         written_cases()
         signal_cases()
     finally:

@@ -3,18 +3,29 @@
 exactly one line on stderr naming the problem (and, for the JSON, its line and column), and
 nothing written; the shipped lap joint solves in both modes.
 
+Issue 26's matrix (hostile_scenes): a scene whose .geo would run a command, write a file, stop
+or mesh on its own, sizes and JSON that would exhaust the machine, data found only at the write,
+invalid materials, outputs onto the run's inputs or onto files thinlayer did not write. Each case
+asserts the exit status, one line on stderr, the folder byte for byte, that nothing appeared
+where a command would have written (a folder outside the scene's), and that no process of the
+run is left (thinlayer runs in its own session; the session is empty after it).
+
     /usr/bin/python3 tests/test_scene_inputs.py PATH/TO/thinlayer PATH/TO/cases/lap_joint
 """
 
 import json
 import os
 import shutil
+import signal
 import stat
 import subprocess
 import sys
 import tempfile
+import time
 
 import h5py
+
+from process_session import run_in_session, session_processes
 
 THINLAYER = os.path.abspath(sys.argv[1])
 LAP = os.path.abspath(sys.argv[2])
@@ -72,16 +83,228 @@ def check(name, ok, detail=""):
         failures.append(f"{name}: {detail}")
 
 
-def refused(name, args, expect_in_message, folder):
-    """Runs thinlayer with args in folder; asserts exit 2, one stderr line containing the text, and
-    the folder unchanged byte for byte."""
-    before = snapshot(folder)
-    r = subprocess.run([THINLAYER, *args], cwd=folder, capture_output=True, text=True)
+OUTSIDE = tempfile.mkdtemp(prefix="thinlayer-outside-")  # where a hostile .geo aims its writes
+
+
+def run(args, folder, timeout=120):
+    """thinlayer in its own session; returns the completed process and the session's survivors."""
+    return run_in_session([THINLAYER, *args], folder, timeout)
+
+
+def refused(name, args, expect_in_message, folder, max_seconds=None):
+    """Runs thinlayer with args in folder; asserts exit 2, one stderr line containing the text, the
+    folder unchanged byte for byte, nothing written outside it, and no process left behind."""
+    before, outside = snapshot(folder), snapshot(OUTSIDE)
+    start = time.monotonic()
+    r, survivors = run(args, folder)
+    seconds = time.monotonic() - start
     lines = r.stderr.strip().splitlines()
     check(name + " exit 2", r.returncode == 2, f"exit {r.returncode}, stderr {r.stderr!r}")
     check(name + " one line", len(lines) == 1, repr(r.stderr))
     check(name + " message", any(expect_in_message in l for l in lines), f"{expect_in_message!r} not in {r.stderr!r}")
     check(name + " nothing written", snapshot(folder) == before, "the folder changed")
+    check(name + " nothing written outside", snapshot(OUTSIDE) == outside, "a file appeared outside the folder")
+    check(name + " no process left", not survivors, f"processes {survivors} outlived thinlayer")
+    if max_seconds is not None:
+        check(name + " refused before it is spent", seconds < max_seconds, f"{seconds:.1f} s")
+    print(f"case {name}: exit {r.returncode}, {lines[0] if lines else ''!r}")
+
+
+def msh(crack=False, concave=False):
+    """Two bodies of two quads each as a gmsh 4.1 mesh: a on y in [0, 1], b on [1, 2], the bondline
+    y = 1; with `crack`, b's last quad repeats a node; with `concave`, a's first quad is not convex."""
+    nodes = [(x, y) for y in (0, 1, 2) for x in (0, 1, 2)]  # tags 1..9, a row per curve
+    if concave:
+        nodes[1] = (0.2, 0.8)
+    last = "10 5 6 9 9" if crack else "10 5 6 9 8"
+    return "\n".join([
+        "$MeshFormat", "4.1 0 8", "$EndMeshFormat",
+        "$PhysicalNames", "5", '1 1 "bottom"', '1 2 "bond"', '1 3 "top"', '2 4 "a"', '2 5 "b"', "$EndPhysicalNames",
+        "$Entities", "0 3 2 0",
+        "1 0 0 0 2 0 0 1 1 0", "2 0 1 0 2 1 0 1 2 0", "3 0 2 0 2 2 0 1 3 0",
+        "1 0 0 0 2 1 0 1 4 0", "2 0 1 0 2 2 0 1 5 0", "$EndEntities",
+        "$Nodes", "3 9 1 9",
+        *[line for curve in range(3) for line in (f"1 {curve + 1} 0 3", *[str(3 * curve + k + 1) for k in range(3)],
+                                                  *[f"{x} {y} 0" for x, y in nodes[3 * curve:3 * curve + 3]])],
+        "$EndNodes",
+        "$Elements", "5 10 1 10",
+        "1 1 1 2", "1 1 2", "2 2 3",
+        "1 2 1 2", "3 4 5", "4 5 6",
+        "1 3 1 2", "5 7 8", "6 8 9",
+        "2 1 3 2", "7 1 2 5 4", "8 2 3 6 5",
+        "2 2 3 2", "9 4 5 8 7", last,
+        "$EndElements", ""])
+
+
+def hostile_scenes(folder, write):
+    """Issue 26's cases, each in the scene folder holding the user's files and a lap joint."""
+    lap = json.load(open(os.path.join(LAP, "lap_joint.json")))
+    geo = open(os.path.join(LAP, "lap_joint.geo")).read()
+    write("lap_joint.geo", geo)
+    write("lap_joint.json", lap)
+    outside = lambda name: os.path.join(OUTSIDE, name)
+
+    def with_geo(name, first=None, last=None, **changes):
+        write(name + ".geo", (first + "\n" if first else "") + geo + ("\n" + last + "\n" if last else ""))
+        scene = json.loads(json.dumps(lap))
+        scene["geometry"] = name + ".geo"
+        scene.update(changes)
+        return write(name + ".json", scene)
+
+    def with_changes(name, change):
+        scene = json.loads(json.dumps(lap))
+        change(scene)
+        return write(name + ".json", scene)
+
+    out = ["--out", "x.h5"]
+    # Nothing runs that the user did not ask for: the .geo is refused, with its line, before gmsh.
+    refused("geo System", ["solve", "--scene", with_geo("system", f'System "touch {outside("pwned")}";'), *out],
+            "system.geo:1: 'System' runs a command", folder)
+    refused("geo SystemCall, study validity", ["study", "validity", "--scene",
+            with_geo("systemcall", last=f'SystemCall "touch {outside("pwned")}";'), "--out", "D"],
+            "systemcall.geo:57: 'SystemCall' runs a command", folder)
+    refused("geo NonBlockingSystemCall", ["solve", "--scene", with_geo("nonblocking", f'NonBlockingSystemCall "sleep 60";')],
+            "'NonBlockingSystemCall' runs a command", folder)
+    refused("geo OnelabRun", ["solve", "--scene", with_geo("onelab", 'OnelabRun("x", "sh -c true");')], "'OnelabRun' runs", folder)
+    refused("geo Plugin", ["solve", "--scene", with_geo("plugin", last="Plugin(MathEval).Run;")], "'Plugin' runs a gmsh plugin", folder)
+    refused("geo Printf to a file", ["solve", "--scene", with_geo("printf", f'Printf("x") > "{outside("p.txt")}";'), *out],
+            "'Printf(...) >' writes a file", folder)
+    refused("geo Save", ["solve", "--scene", with_geo("save", last=f'Save "{outside("any.msh")}";'), *out],
+            "'Save' writes a file", folder)
+    refused("geo Exit, solve --out", ["solve", "--scene", with_geo("exit", "Exit;"), *out], "exit.geo:1: 'Exit' ends the process",
+            folder)
+    refused("geo Exit, study --out", ["study", "validity", "--scene", "exit.json", "--out", "D"], "'Exit' ends the process", folder)
+    refused("geo Include outside the folder", ["solve", "--scene", with_geo("include", 'Include "../elsewhere.geo";')],
+            "a file outside the scene's folder", folder)
+    write("part.geo", f'x = 1;\nSystem "touch {outside("pwned")}";\n')
+    refused("geo Include of a script that runs", ["solve", "--scene", with_geo("include_part", 'Include "part.geo";')],
+            "part.geo:2: 'System' runs a command", folder)
+    refused("geo computed Include", ["solve", "--scene", with_geo("include_computed", 'Include StrCat("pa", "rt.geo");')],
+            "takes a file name in quotes", folder)
+    refused("geo ending in Mesh 2", ["solve", "--scene", with_geo("mesh2", last="Mesh 2;"), *out], "'Mesh' meshes inside the script",
+            folder)
+    refused("geo General option", ["solve", "--scene", with_geo("general", "General.Terminal = 1;")], "'General' sets gmsh's", folder)
+    refused("geo name built at run time", ["solve", "--scene", with_geo("s2n", f'S2N["System"] "touch {outside("pwned")}";')],
+            "'S2N' builds a name at run time", folder)
+    # gmsh's failures: one line naming the file, never 134/139.
+    refused("geo P1 with Mesh.Algorithm 8 (gmsh crashes)",
+            ["solve", "--scene", with_geo("algorithm8", "Mesh.Algorithm = 8;", element="P1"), *out],
+            "algorithm8.geo: gmsh crashed", folder)
+    refused("geo quadratic elements", ["solve", "--scene", with_geo("order2", "Mesh.ElementOrder = 2;"), *out],
+            "order2.geo: gmsh surface", folder)
+    write("crack.msh", msh(crack=True))
+    write("good.msh", msh())
+    two_quads = {"name": "q", "bodies": {"a": {"group": "a", "lambda": 4500, "mu": 5400},
+                                         "b": {"group": "b", "lambda": 4500, "mu": 5400}},
+                 "interface": {"group": "bond", "plus": "b", "minus": "a", "friction": 0.5,
+                               "layer": {"gamma": 1, "delta": 1, "lambda_g": 4500, "mu_g": 5400}},
+                 "supports": [{"group": "bottom", "u": [0, 0]}, {"group": "top", "u": [0.001, -0.001]}]}
+    write("good_msh.json", dict(two_quads, mesh="good.msh"))
+    r, _ = run(["solve", "--scene", "good_msh.json", "--json"], folder)
+    check("a .msh of two quads solves (the crack case's control)", r.returncode == 0, r.stderr)
+    refused("msh quad with a repeated node (a crack)", ["solve", "--scene", write("crack.json", dict(two_quads, mesh="crack.msh")),
+            *out], "crack.msh: gmsh mesh has a cell whose corners repeat the node", folder)
+    write("concave.msh", msh(concave=True))
+    refused("msh quad that is not convex", ["solve", "--scene", write("concave.json", dict(two_quads, mesh="concave.msh")), *out],
+            "concave.msh: body 'a': the cell with a corner at (0.2, 0.8) is inverted or not convex", folder)
+    # A name holding a comma stays one name in the file (lists of names are arrays).
+    comma = json.loads(json.dumps(lap).replace('"upper": {', '"up,per": {').replace('"plus": "upper"', '"plus": "up,per"'))
+    r, _ = run(["solve", "--scene", write("comma.json", comma), "--out", "comma.h5", "--json"], folder)
+    check("a body named 'up,per' solves", r.returncode == 0, r.stderr)
+    if r.returncode == 0:
+        with h5py.File(os.path.join(folder, "comma.h5")) as h:
+            bodies = list(h["scenes"][json.loads(r.stdout)["scene"]]["residual_per_body"].attrs["bodies"])
+        check("a body named 'up,per' is one name", bodies == ["lower", "up,per"], str(bodies))
+    # Bounded before spent: the mesh estimate, the JSON's depth and lists, in well under a second.
+    for name, size in (("1e-9", {"interface": 1e-9, "far": 2}), ("1e-6 to 2", {"interface": 1e-6, "far": 2}),
+                       ("1e-3 everywhere", {"interface": 1e-3, "far": 1e-3})):
+        refused(f"mesh_size {name}", ["solve", "--scene", with_changes("size" + name.replace(" ", "_"),
+                lambda s: s.update(mesh_size=size)), *out], "above the limit of 2000000 (--max-nodes)", folder, max_seconds=5)
+    refused("mesh_size 1e-320", ["solve", "--scene", write("size320.json", json.dumps(lap).replace(
+            '"interface": 0.5', '"interface": 1e-320'))], "the number 1e-320 underflows a double", folder)
+    refused("geo Mesh.MeshSizeMax = 1e-4", ["solve", "--scene", with_geo("sizemax", last="Mesh.MeshSizeMax = 1e-4;"), *out],
+            "(--max-nodes)", folder, max_seconds=5)
+    refused("--max-nodes below the lap joint's", ["solve", "--scene", "lap_joint.json", "--max-nodes", "100", *out],
+            "above the limit of 100 (--max-nodes)", folder)
+    refused("JSON nested 100 000 deep", ["solve", "--scene", write("deep.json", '{"name": ' + "[" * 100000 + "]" * 100000 + "}")],
+            "deep.json:1:73: nested deeper than 64 levels", folder, max_seconds=5)
+    refused("eps list of 200 000", ["solve", "--scene", with_changes("eps_list", lambda s: s.update(eps=[1e-3] * 200000))],
+            "more than 10000 entries", folder, max_seconds=5)
+    refused("20 000 bodies", ["solve", "--scene", with_changes("bodies", lambda s: s.update(
+            bodies={f"b{k}": {"group": "lower", "lambda": 1, "mu": 1} for k in range(20000)}))],
+            "more than 10000 entries", folder, max_seconds=5)
+    # Everything checkable before the solve is: nothing found at the write, no empty folder left.
+    refused("name '.'", ["study", "validity", "--scene", with_changes("dot", lambda s: s.update(name=".")), "--out", "D"],
+            "'name' '.' names no group", folder)
+    refused("a body name holding NUL", ["solve", "--scene", write("nul.json", json.dumps(lap).replace('"upper": {', '"up\\u0000per": {')
+            .replace('"plus": "upper"', '"plus": "up\\u0000per"')), *out], "holds a control character", folder)
+    refused("support on the bondline", ["solve", "--scene", with_changes("bond_support", lambda s: s["supports"].append(
+            {"group": "bondline", "u": [0, 0]})), *out], "support on the bondline 'bondline'", folder)
+    refused("load on the bondline", ["solve", "--scene", with_changes("bond_load", lambda s: s["loads"].append(
+            {"group": "bondline", "traction": [0, 1]})), *out], "load on the bondline", folder)
+    refused("conflicting supports (the clamp twice)", ["solve", "--scene", with_changes("clamp_twice", lambda s: s["supports"].extend(
+            [{"group": "clamp", "u": [1, 1]}])), *out], "support group 'clamp' is given twice", folder)
+    refused("duplicate loads", ["solve", "--scene", with_changes("press_twice", lambda s: s["loads"].append(
+            {"group": "press", "traction": [0, -5]})), *out], "load group 'press' is given twice", folder)
+    refused("two bodies on one physical surface", ["solve", "--scene", with_changes("same_surface", lambda s: s["bodies"].update(
+            {"third": {"group": "lower", "lambda": 5108, "mu": 2632}})), *out], "are the same physical surface 'lower'", folder)
+    refused("two groups naming one surface", ["solve", "--scene", with_geo("alias", last='Physical Surface("alias") = {1};',
+            bodies=dict(lap["bodies"], third={"group": "alias", "lambda": 5108, "mu": 2632})), *out],
+            "bodies 'lower' and 'third' share the cell", folder)
+    refused("plane stress, lambda -2000 (nu < -1)", ["solve", "--scene", with_changes("nu_stress", lambda s: (
+            s.update(plane="stress"), s["bodies"]["lower"].update({"lambda": -2000}))), *out],
+            "body 'lower' is no material: 3 lambda + 2 mu", folder)
+    refused("plane strain, lambda -2600 (no 3D material)", ["solve", "--scene", with_changes("nu_strain", lambda s:
+            s["bodies"]["upper"].update({"lambda": -2600})), *out], "body 'upper' is no material", folder)
+    refused("friction 1e-320", ["solve", "--scene", write("friction320.json", json.dumps(lap).replace(
+            '"friction": 0.5', '"friction": 1e-320'))], "underflows a double", folder)
+    refused("an eps list holding 1e-320", ["study", "validity", "--scene", write("eps320.json", json.dumps(lap).replace(
+            '0.001]', '1e-320]')), "--out", "D"], "the number 1e-320 underflows", folder)
+    # Nothing lost: an output never replaces an input of the run, nor a file thinlayer did not write.
+    refused("--out the scene file", ["solve", "--scene", "lap_joint.json", "--out", "lap_joint.json"],
+            "it is the scene file", folder)
+    refused("--out the geometry", ["solve", "--scene", "lap_joint.json", "--out", "lap_joint.geo", "--force"],
+            "it is its geometry", folder)
+    refused("--vtu the scene file", ["solve", "--scene", "lap_joint.json", "--vtu", "lap_joint.json"], "it is the scene file", folder)
+    os.symlink("lap_joint.json", os.path.join(folder, "scene_link.json"))
+    refused("--out through a link to the scene", ["solve", "--scene", "lap_joint.json", "--out", "scene_link.json"],
+            "it is the scene file", folder)
+    refused("--out onto a file included by the geometry", ["solve", "--scene", with_geo("include_ok", 'Include "leaf.geo";'),
+            "--out", write("leaf.geo", "y = 2;\n")], "a file its geometry reads", folder)
+    refused("--out onto the user's notes", ["solve", "--scene", "lap_joint.json", "--out", "notes.txt"],
+            "it exists and is not a thinlayer results file (give --force", folder)
+    refused("--vtu onto the user's notes", ["solve", "--scene", "lap_joint.json", "--vtu", "notes.txt"],
+            "is not a VTU file thinlayer wrote", folder)
+    os.makedirs(os.path.join(folder, "D_text"))
+    write("D_text/results.h5", "a text file\n")
+    refused("study --out DIR whose results.h5 is text", ["study", "validity", "--scene", "lap_joint.json", "--out", "D_text"],
+            "D_text/results.h5': it exists and is not a thinlayer results file", folder)
+    os.makedirs(os.path.join(folder, "D_foreign"))
+    with h5py.File(os.path.join(folder, "D_foreign", "results.h5"), "w") as f:
+        f["data"] = [1, 2, 3]
+    refused("study --out DIR whose results.h5 is another tool's", ["study", "validity", "--scene", "lap_joint.json", "--out",
+            "D_foreign"], "is not a thinlayer results file", folder)
+
+    # --force replaces a file thinlayer did not write, and only that.
+    write("replace_me.txt", "old notes\n")
+    r, survivors = run(["solve", "--scene", "lap_joint.json", "--out", "replace_me.txt", "--force"], folder)
+    check("--force replaces a foreign file", r.returncode == 0 and h5py.is_hdf5(os.path.join(folder, "replace_me.txt")), r.stderr)
+    check("--force: no process left", not survivors, str(survivors))
+
+    # SIGTERM while gmsh runs a long loop: the meshing child dies with thinlayer.
+    slow = with_geo("slow", "For i In {1:2000000000}\nEndFor")
+    p = subprocess.Popen([THINLAYER, "solve", "--scene", slow], cwd=folder, stdout=subprocess.DEVNULL,
+                         stderr=subprocess.DEVNULL, start_new_session=True)
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline and len(session_processes(p.pid)) < 2:
+        time.sleep(0.02)
+    check("SIGTERM while meshing: the child ran", len(session_processes(p.pid)) >= 2, "no meshing child seen")
+    p.send_signal(signal.SIGTERM)
+    status = p.wait(timeout=30)
+    time.sleep(0.1)
+    check("SIGTERM while meshing: exit", status == -signal.SIGTERM, f"status {status}")
+    check("SIGTERM while meshing: no process left", not session_processes(p.pid), str(session_processes(p.pid)))
+    print("case SIGTERM while gmsh loops: thinlayer and its meshing child gone")
 
 
 def done_when(folder):
@@ -287,8 +510,10 @@ def main():
             check("lap joint layer converged", j["converged"], r.stdout)
             check("lap joint layer faces", set(j["counts"]) == {"S+", "S-", "combined"}, r.stdout)
         done_when(folder)
+        hostile_scenes(folder, write)
     finally:
         shutil.rmtree(folder)
+        shutil.rmtree(OUTSIDE)
     print(f"{passed} checks passed, {len(failures)} failed")
     for f in failures:
         print("FAIL", f)

@@ -1,5 +1,6 @@
 #include "cases/scene/json_positions.h"
 
+#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
@@ -61,6 +62,9 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
     const std::size_t start = next_token(last_end_, stack_.empty() || !stack_.back().object ? "[," : ":");
     if (x == 0 && text.find_first_of("123456789") < text.find_first_of("eE"))
       return refuse(start, "the number " + text + " underflows a double");
+    // As on the command line: a subnormal has lost digits (glibc's ERANGE), so it is refused too.
+    if (std::fpclassify(x) == FP_SUBNORMAL)
+      return refuse(start, "the number " + text + " underflows a double (the smallest normal number is about 2.2e-308)");
     return value();
   }
   bool string(string_t&) override { return value(); }
@@ -178,6 +182,31 @@ std::string syntax_message(const std::string& what) {
   return what;
 }
 
+// SPEC §4's bounds, checked on the raw text before nlohmann builds anything: its parser keeps a
+// frame per open bracket and the position recorder a JSON pointer per value, so 100 000 nested
+// brackets took 44 s and ended in std::bad_alloc (20 000: 842 MB), and 20 000 bodies ran for
+// minutes. One pass, strings skipped; the error at the first bracket or entry too many.
+void check_bounds(const std::string& text, const std::string& source) {
+  std::vector<std::size_t> commas;  // per open bracket: the commas at its level so far
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '"') {  // a string: skip it, and its escaped quotes
+      for (++i; i < text.size() && text[i] != '"'; ++i)
+        if (text[i] == '\\') ++i;
+    } else if (c == '[' || c == '{') {
+      if (commas.size() == max_json_depth)
+        throw InputError(where(source, position_of(text, i)) + "nested deeper than " + std::to_string(max_json_depth) +
+                         " levels (a scene file needs a few)");
+      commas.push_back(0);
+    } else if ((c == ']' || c == '}') && !commas.empty()) {
+      commas.pop_back();
+    } else if (c == ',' && !commas.empty() && ++commas.back() == max_json_entries) {
+      throw InputError(where(source, position_of(text, i + 1)) + "more than " + std::to_string(max_json_entries) +
+                       " entries in one list or object");
+    }
+  }
+}
+
 }  // namespace
 
 TextPosition position_of(const std::string& text, std::size_t offset) {
@@ -207,6 +236,7 @@ void PositionedJson::fail(const std::string& pointer, const std::string& what) c
 }
 
 PositionedJson parse_positioned_json(const std::string& text, const std::string& source) {
+  check_bounds(text, source);
   PositionedJson out;
   out.source = source;
   std::size_t read = 0;
@@ -226,6 +256,9 @@ PositionedJson read_positioned_json(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError("scene file " + path + " does not exist");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError("scene file " + path + " is not a regular file");
+  if (std::filesystem::file_size(path, ec) > max_json_bytes)
+    throw InputError("scene file " + path + " is larger than " + std::to_string(max_json_bytes >> 20) +
+                     " MiB (a scene file names its geometry: it is small)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read scene file " + path);
   std::ostringstream text;

@@ -32,13 +32,21 @@ struct PositionedJson {
   [[noreturn]] void fail(const std::string& pointer, const std::string& what) const;
 };
 
-// Parses `text` (nlohmann-json, strict RFC 8259: no comments, no trailing commas). A syntax
+// Bounds (SPEC §4): nesting, entries per array or object, and a scene file's size.
+constexpr std::size_t max_json_depth = 64;
+constexpr std::size_t max_json_entries = 10'000;
+constexpr std::size_t max_json_bytes = 16u << 20;
+
+// Parses `text` (nlohmann-json, strict RFC 8259: no comments, no trailing commas). Text nested
+// deeper than max_json_depth or with more than max_json_entries in one array or object throws
+// InputError at the first bracket or entry too many, before parsing. A syntax
 // error throws InputError "<source>:<line>:<column>: <nlohmann's description>". A key given
 // twice in one object is refused too (nlohmann keeps the last one silently, which would hide a
 // typo's twin).
 PositionedJson parse_positioned_json(const std::string& text, const std::string& source);
 
-// Reads and parses a file; a file that cannot be read throws InputError naming it.
+// Reads and parses a file; a file that cannot be read, or larger than max_json_bytes, throws
+// InputError naming it.
 PositionedJson read_positioned_json(const std::string& path);
 
 // The position of byte `offset` (0-based) in `text`.

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "cases/layer_quadrature.h"
+#include "cases/scene/scene_checks.h"
 #include "cases/scene/scene_reference.h"
 #include "core/io/scene_id_number.h"
 #include "core/io/units.h"
@@ -90,6 +91,7 @@ void add(StatusCount& total, const StatusCount& c) {
 SceneFileBulk::SceneFileBulk(SceneSpec spec) : spec_(std::move(spec)) {
   meshes_ = load_scene_meshes(spec_);
   S_ = check_scene_meshes(spec_, meshes_);
+  check_scene_mesh_data(spec_, meshes_);  // shared cells, supports on S or in conflict, inverted cells (scene_checks.h)
   thickest_ = scene_thickest_layer(spec_, meshes_, S_);
   L_ = scene_characteristic_length(spec_, meshes_.bodies);
   model_ = make_scene_limit_model(spec_, meshes_);

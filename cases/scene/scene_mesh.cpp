@@ -7,6 +7,8 @@
 #include <cmath>
 #include <map>
 
+#include "cases/scene/mesh_estimate.h"
+#include "cases/scene/scene_mesh_child.h"
 #include "core/mesh/gmsh_session.h"
 
 namespace thinlayer {
@@ -101,7 +103,9 @@ double bounding_size(const std::vector<Mesh>& meshes) {
 
 }  // namespace
 
-SceneMeshes load_scene_meshes(const SceneSpec& spec) {
+namespace {
+
+SceneMeshes mesh_in_this_process(const SceneSpec& spec) {
   const auto start = std::chrono::steady_clock::now();
   const std::string file = spec.geometry.empty() ? spec.mesh : spec.geometry;
   GmshModelScope scope("scene");
@@ -142,6 +146,7 @@ SceneMeshes load_scene_meshes(const SceneSpec& spec) {
                              " acts along a curve; a force may act on a point)");
     }
 
+    refuse_oversized_mesh(spec);  // bounded before spent (cases/scene/mesh_estimate.h)
     if (!spec.geometry.empty()) generate(spec, bondline_curves);
     std::vector<NamedBoundary> boundaries;
     for (const auto& [key, tags] : groups)
@@ -162,5 +167,10 @@ SceneMeshes load_scene_meshes(const SceneSpec& spec) {
     return out;
   });
 }
+
+}  // namespace
+
+// In the confined meshing child, after the .geo scan (cases/scene/scene_mesh_child.h).
+SceneMeshes load_scene_meshes(const SceneSpec& spec) { return mesh_scene_in_child(spec, mesh_in_this_process); }
 
 }  // namespace thinlayer

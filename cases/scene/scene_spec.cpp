@@ -1,5 +1,7 @@
 #include "cases/scene/scene_spec.h"
 
+#include "cases/scene/scene_checks.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -411,6 +413,7 @@ SceneSpec scene_spec_from_json(const PositionedJson& doc, const std::string& fol
   read_interfaces(root, s);
   read_supports(root, s);
   read_loads(root, s);
+  check_scene_spec(s, doc);  // names, materials, repeated groups (cases/scene/scene_checks.h)
   return s;
 }
 

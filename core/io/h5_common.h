@@ -33,8 +33,26 @@ class Handle {
   Closer close_;
 };
 
+// Before the first HDF5 call of the process (H5Writer's and H5Reader's constructors): HDF5's
+// own error printing off (a failure is our one-line message, not HDF5's stack on stderr), and
+// no clean-up of HDF5 at exit. Why the latter: after a failed H5Fclose (a full disk) the file
+// stays half-open, and the library's exit handler closing it again crashed in H5F__close_cb
+// (exit 139). Every file thinlayer writes is closed or abandoned (its temporary removed)
+// before exit, so the exit handler has nothing to do that the process's end does not.
+inline void start_hdf5() {
+  static const bool started = [] {
+    H5dont_atexit();
+    H5open();
+    return true;
+  }();
+  (void)started;
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // per thread where HDF5 is thread-safe
+}
+
 // With automatic printing off, the innermost entry of HDF5's error stack is the only place
-// that says what actually went wrong (e.g. "object 'x' doesn't exist").
+// that says what actually went wrong (e.g. "object 'x' doesn't exist"). A system call's
+// failure is told as HDF5's multi-line record ("file write failed: time = ..., errno = 28,
+// error message = 'No space left on device', ..."): its error message is the reason.
 inline std::string hdf5_reason() {
   std::string reason;
   auto innermost = [](unsigned n, const H5E_error2_t* error, void* out) -> herr_t {
@@ -42,15 +60,23 @@ inline std::string hdf5_reason() {
     return 0;
   };
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, innermost, &reason);
+  const std::string system = "error message = '";
+  if (const std::size_t at = reason.find(system); at != std::string::npos) {
+    const std::size_t start = at + system.size();
+    reason = reason.substr(0, reason.find(':')) + ": " + reason.substr(start, reason.find('\'', start) - start);
+  }
+  for (char& c : reason)
+    if (c == '\n' || c == '\r') c = ' ';
   return reason;
 }
 
-// HDF5 reports failure as a negative id or status.
-template <typename Id>
+// HDF5 reports failure as a negative id or status: thrown as an `Error` (the writer's are
+// OutputError, core/io/output_target.h).
+template <typename Error = std::runtime_error, typename Id>
 Id check(Id id, const std::string& what) {
   if (id < 0) {
     const std::string reason = hdf5_reason();
-    throw std::runtime_error(what + (reason.empty() ? "" : ": " + reason));
+    throw Error(what + (reason.empty() ? "" : ": " + reason));
   }
   return id;
 }

@@ -102,7 +102,7 @@ std::vector<std::string> read_string_values(hid_t type, std::size_t count, Read 
 }  // namespace
 
 H5Reader::H5Reader(const std::string& path) : path_(path) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  h5::start_hdf5();
   // Opening the file ourselves first gets the system's reason (missing, no permission) for
   // the message; HDF5 would bury it in its error stack.
   const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
@@ -179,6 +179,19 @@ std::string H5Reader::attr_string(const std::string& path, const std::string& na
     check(H5Aread(a.attr.get(), a.type.get(), buffer), "cannot read " + what);
   };
   return read_string_values(a.type.get(), 1, read).front();
+}
+
+std::vector<std::string> H5Reader::attr_strings(const std::string& path, const std::string& name) const {
+  const std::string what = "attribute '" + name + "' on " + at(path, path_);
+  Handle object(check(H5Oopen(file_, object_name(path), H5P_DEFAULT), "cannot open " + at(path, path_)), H5Oclose);
+  Handle attr(check(H5Aopen(object.get(), name.c_str(), H5P_DEFAULT), "cannot open " + what), H5Aclose);
+  Handle space(check(H5Aget_space(attr.get()), "cannot read " + what), H5Sclose);
+  const hssize_t count = check(H5Sget_simple_extent_npoints(space.get()), "cannot read " + what);
+  Handle type(check(H5Aget_type(attr.get()), "cannot read " + what), H5Tclose);
+  require_class(type.get(), {H5T_STRING}, what, "a string");
+  if (count == 0) return {};
+  auto read = [&](void* buffer) { check(H5Aread(attr.get(), type.get(), buffer), "cannot read " + what); };
+  return read_string_values(type.get(), static_cast<std::size_t>(count), read);
 }
 
 std::vector<double> H5Reader::read_doubles(const std::string& path,

@@ -33,6 +33,8 @@ class H5Reader {
   double attr_double(const std::string& path, const std::string& name) const;
   long long attr_int(const std::string& path, const std::string& name) const;
   std::string attr_string(const std::string& path, const std::string& name) const;
+  // A string attribute of any shape, its values in row-major order.
+  std::vector<std::string> attr_strings(const std::string& path, const std::string& name) const;
 
   // All values in row-major order; `shape`, if given, receives the dimensions (for an
   // N x 2 dataset, {N, 2}; empty for a scalar dataset).

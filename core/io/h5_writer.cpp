@@ -20,8 +20,13 @@ namespace thinlayer {
 namespace {
 
 using h5::at;
-using h5::check;
 using h5::Handle;
+
+// Every failure of a write is an output that cannot be written (exit status 2, SPEC §4).
+template <typename Id>
+Id check(Id id, const std::string& what) {
+  return h5::check<OutputError>(id, what);
+}
 
 // "/a//b/" -> {"a", "b"}; "/" -> {}.
 std::vector<std::string> split_path(const std::string& path) {
@@ -44,7 +49,7 @@ Handle open_or_create(hid_t file, const std::string& path, const std::string& fi
   std::string prefix;
   for (const std::string& name : split_path(path)) {
     if (H5Iget_type(object.get()) != H5I_GROUP)
-      throw std::runtime_error(at(prefix, file_name) + " exists and is not a group");
+      throw OutputError(at(prefix, file_name) + " exists and is not a group");
     prefix += "/" + name;
     const htri_t found = check(H5Lexists(object.get(), name.c_str(), H5P_DEFAULT),
                                "cannot look up " + at(prefix, file_name));
@@ -60,7 +65,7 @@ Handle open_or_create(hid_t file, const std::string& path, const std::string& fi
 Handle open_or_create_group(hid_t file, const std::string& path, const std::string& file_name) {
   Handle group = open_or_create(file, path, file_name);
   if (H5Iget_type(group.get()) != H5I_GROUP)
-    throw std::runtime_error(at(path, file_name) + " exists and is not a group");
+    throw OutputError(at(path, file_name) + " exists and is not a group");
   return group;
 }
 
@@ -74,7 +79,7 @@ Handle utf8_string_type() {
 // C strings end at the first NUL, so HDF5 would silently truncate such a string.
 void require_no_nul(const std::string& value, const std::string& what) {
   if (value.find('\0') != std::string::npos)
-    throw std::runtime_error(what + ": string contains a NUL character");
+    throw OutputError(what + ": string contains a NUL character");
 }
 
 // Writes a new rank-1 or rank-2 dataset from contiguous row-major `data`.
@@ -82,7 +87,7 @@ void write_dataset(hid_t file, const std::string& path, const std::string& file_
                    const std::vector<hsize_t>& dims, hid_t file_type, hid_t mem_type,
                    const void* data) {
   std::vector<std::string> parts = split_path(path);
-  if (parts.empty()) throw std::runtime_error("invalid dataset path " + at(path, file_name));
+  if (parts.empty()) throw OutputError("invalid dataset path " + at(path, file_name));
   const std::string name = parts.back();
   parts.pop_back();
   std::string parent_path;
@@ -91,7 +96,7 @@ void write_dataset(hid_t file, const std::string& path, const std::string& file_
 
   Handle parent = open_or_create_group(file, parent_path, file_name);
   if (check(H5Lexists(parent.get(), name.c_str(), H5P_DEFAULT), "cannot look up " + what) > 0)
-    throw std::runtime_error(what + " already exists");
+    throw OutputError(what + " already exists");
   Handle space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
                      "cannot create dataspace for " + what),
                H5Sclose);
@@ -105,19 +110,22 @@ void write_dataset(hid_t file, const std::string& path, const std::string& file_
           "cannot write " + what);
 }
 
+// A scalar attribute (`dims` empty) or a 1-D one of dims[0] values.
 void write_attr(hid_t file, const std::string& object_path, const std::string& name,
                 const std::string& file_name, hid_t file_type, hid_t mem_type,
-                const void* value) {
+                const void* value, const std::vector<hsize_t>& dims = {}) {
   const std::string what = "attribute '" + name + "' on " + at(object_path, file_name);
   Handle object = open_or_create(file, object_path, file_name);
   if (check(H5Aexists(object.get(), name.c_str()), "cannot look up " + what) > 0)
-    throw std::runtime_error(what + " already exists");
-  Handle space(check(H5Screate(H5S_SCALAR), "cannot create dataspace for " + what), H5Sclose);
+    throw OutputError(what + " already exists");
+  Handle space(check(dims.empty() ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, dims.data(), nullptr),
+                     "cannot create dataspace for " + what),
+               H5Sclose);
   Handle attr(check(H5Acreate2(object.get(), name.c_str(), file_type, space.get(), H5P_DEFAULT,
                                H5P_DEFAULT),
                     "cannot create " + what),
               H5Aclose);
-  check(H5Awrite(attr.get(), mem_type, value), "cannot write " + what);
+  if (dims.empty() || dims[0] > 0) check(H5Awrite(attr.get(), mem_type, value), "cannot write " + what);
 }
 
 hid_t create_file(const std::string& tmp_path, const std::string& file_name) {
@@ -142,7 +150,7 @@ void flush_to_disk(const std::string& tmp_path, const std::string& file_name) {
 
 H5Writer::H5Writer(const std::string& path)
     : path_(path), target_(resolve_output_target(path)), tmp_path_(temporary_name_beside(target_)) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  h5::start_hdf5();
   // Creating the file ourselves first gets the system's reason (missing directory, no
   // permission) for the message; HDF5 would bury it in its error stack.
   register_temporary(tmp_path_);
@@ -168,6 +176,8 @@ H5Writer::~H5Writer() {
   std::error_code ec;
   if (!committed_) std::filesystem::remove(tmp_path_, ec);
   unregister_temporary(tmp_path_);
+  if (!committed_)
+    for (const std::string& folder : folders_) ::rmdir(folder.c_str());  // only if empty: never the user's files
 }
 
 void H5Writer::commit() {
@@ -183,7 +193,7 @@ void H5Writer::commit() {
 }
 
 std::int64_t H5Writer::file() const {
-  if (file_ < 0) throw std::runtime_error("'" + path_ + "' is already committed or closed");
+  if (file_ < 0) throw OutputError("'" + path_ + "' is already committed or closed");
   return file_;
 }
 
@@ -204,6 +214,17 @@ void H5Writer::attr(const std::string& object_path, const std::string& name,
   Handle type = utf8_string_type();
   const char* c_string = value.c_str();  // a variable-length string is passed by pointer
   write_attr(file(), object_path, name, path_, type.get(), type.get(), &c_string);
+}
+
+void H5Writer::attr(const std::string& object_path, const std::string& name,
+                    const std::vector<std::string>& values) {
+  std::vector<const char*> c_strings;
+  for (const std::string& value : values) {
+    require_no_nul(value, "attribute '" + name + "' on " + at(object_path, path_));
+    c_strings.push_back(value.c_str());
+  }
+  Handle type = utf8_string_type();
+  write_attr(file(), object_path, name, path_, type.get(), type.get(), c_strings.data(), {values.size()});
 }
 
 void H5Writer::dataset(const std::string& path, const double* data, std::size_t rows,

@@ -17,8 +17,9 @@
 // strings as variable-length UTF-8 (h5py returns attributes as `str`; string datasets as
 // `bytes` unless read through `.asstr()`). NaN and Inf are written as given.
 //
-// Every failure throws std::runtime_error (OutputError when opening or committing) naming the file and the object. HDF5's own error
-// printing is turned off for the constructing thread (HDF5 keeps that setting per thread).
+// Every failure throws OutputError (an output that cannot be written: exit status 2) naming
+// the file and the object, in one line; a full disk found at the close included. HDF5's own
+// error printing is off (h5_common.h: start_hdf5).
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
@@ -29,6 +30,8 @@
 #include <vector>
 
 #include <Eigen/Core>
+
+#include "core/io/output_target.h"
 
 namespace thinlayer {
 
@@ -46,6 +49,9 @@ class H5Writer {
 
   // Closes the file and moves it onto the target path. No other call is allowed afterwards.
   void commit();
+  // Folders made for this file (deepest first): removed, if empty, when the file is abandoned,
+  // so that a failed run leaves no empty output folder behind (SPEC §4).
+  void remove_if_abandoned(std::vector<std::string> folders) { folders_ = std::move(folders); }
   const std::string& path() const { return path_; }
 
   void group(const std::string& path);
@@ -53,11 +59,14 @@ class H5Writer {
   // Scalar attributes on the group or dataset at object_path (a missing group is created).
   void attr(const std::string& object_path, const std::string& name, double value);
   void attr(const std::string& object_path, const std::string& name, const std::string& value);
+  // A list of names as a 1-D string attribute (h5py: an array of str), never joined by commas:
+  // a name may hold one.
+  void attr(const std::string& object_path, const std::string& name, const std::vector<std::string>& values);
   template <std::integral T>
   void attr(const std::string& object_path, const std::string& name, T value) {
     if constexpr (std::is_unsigned_v<T> && sizeof(T) >= sizeof(long long)) {
       if (value > static_cast<T>(std::numeric_limits<long long>::max()))
-        throw std::runtime_error("attribute '" + name + "' on '" + object_path + "' in '" +
+        throw OutputError("attribute '" + name + "' on '" + object_path + "' in '" +
                                  path_ + "' does not fit in int64");
     }
     attr_int64(object_path, name, static_cast<long long>(value));
@@ -82,6 +91,7 @@ class H5Writer {
   std::string tmp_path_;
   std::int64_t file_ = -1;  // hid_t, kept as its underlying type so <hdf5.h> stays private
   bool committed_ = false;
+  std::vector<std::string> folders_;
 };
 
 }  // namespace thinlayer

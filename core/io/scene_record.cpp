@@ -208,18 +208,14 @@ void write_scene(H5Writer& file, const SceneRecord& scene) {
     file.dataset(g + "/combined_status", scene.combined_status);
     file.attr(g + "/combined_status", "legend", status_legend);
   }
-  auto joined = [](const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& n : names) out += (out.empty() ? "" : ",") + n;
-    return out;
-  };
-  // SPEC §1.5's residuals, one value per body or interface, named in `list_attr`.
+  // SPEC §1.5's residuals, one value per body or interface, named in `list_attr` (an array of
+  // names: a body's name may hold a comma).
   auto residuals = [&](const std::string& name, const std::vector<double>& values, const char* list_attr,
                        const std::vector<std::string>& names, const char* evaluation) {
     if (values.empty()) return;
     file.dataset(g + "/" + name, values);
     with_unit(g + "/" + name, name);
-    file.attr(g + "/" + name, list_attr, joined(names));
+    file.attr(g + "/" + name, list_attr, names);
     if (evaluation) file.attr(g + "/" + name, "evaluation", evaluation);
   };
   residuals("residual_per_body", scene.residual_per_body, "bodies", scene.body_names, nullptr);

@@ -1,5 +1,7 @@
 #include "core/io/vtu_writer.h"
 
+#include "core/io/output_ownership.h"
+
 #include <atomic>
 #include <cerrno>
 #include <charconv>
@@ -233,7 +235,7 @@ std::string vtu_text(const SceneRecord& scene, const std::string& path) {
   if (scene.nodes.rows() == 0 || scene.nodes.cols() != 2 || scene.u.cols() != 2 || scene.u.rows() != scene.nodes.rows())
     bad_scene(path, "nodes and u must both be N x 2, N > 0");
   if (scene.cells.cols() != 3 && scene.cells.cols() != 4) bad_scene(path, "cells must have 3 or 4 columns");
-  return "<?xml version=\"1.0\"?>\n"
+  return "<?xml version=\"1.0\"?>\n" + std::string(vtu_marker) + "\n"
          "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
          "<UnstructuredGrid>\n" +
          field_data(scene, path) + "<Piece NumberOfPoints=\"" + std::to_string(scene.nodes.rows()) +

@@ -9,6 +9,8 @@
 #include <set>
 #include <unordered_map>
 
+#include <unistd.h>
+
 namespace thinlayer {
 
 namespace {
@@ -149,6 +151,11 @@ std::vector<std::array<int, N>> convert_cells(const GmshCells& cells, const Node
   for (std::size_t c = 0; c < out.size(); ++c) {
     std::array<int, N> cell;
     for (std::size_t k = 0; k < N; ++k) cell[k] = index.at(cells.node_tags[N * c + k]);
+    for (std::size_t k = 0; k < N; ++k)
+      if (cell[k] == cell[(k + 1) % N] || (N == 4 && k < 2 && cell[k] == cell[k + 2]))
+        throw std::runtime_error("gmsh mesh has a cell whose corners repeat the node at (" +
+                                 std::to_string(mesh.nodes(cell[k], 0)) + ", " + std::to_string(mesh.nodes(cell[k], 1)) +
+                                 "): a degenerate cell (a crack?)");
     out[c] = counter_clockwise(mesh, cell);
   }
   return out;
@@ -333,6 +340,11 @@ void gmsh_new_model(const std::string& name) {
     gmsh::clear();  // drops every model and leaves one empty, unnamed model
     gmsh::model::add(name);
   });
+}
+
+int fork_with_gmsh_lock() {
+  std::lock_guard<std::mutex> lock(gmsh_mutex());
+  return ::fork();  // the child's copy of the mutex is unlocked by the guard's copy
 }
 
 GmshModelScope::GmshModelScope(const std::string& name) : lock_(gmsh_mutex()) {

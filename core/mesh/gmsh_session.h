@@ -42,6 +42,11 @@ class GmshModelScope {
   std::unique_lock<std::mutex> lock_;
 };
 
+// fork() while holding the lock of GmshModelScope, so that no other thread of this process is
+// inside gmsh at that instant (the child's copy of gmsh is whole); the lock is released in
+// both processes. For core/mesh/meshing_child.h.
+int fork_with_gmsh_lock();
+
 // gmsh 4.8 reports errors by throwing a bare std::string, which `catch (std::exception&)`
 // misses; run `f` and rethrow those as std::runtime_error.
 template <class F>

@@ -5,57 +5,57 @@
 #include <filesystem>
 #include <iostream>
 
-#include <nlohmann/json.hpp>
-
+#include "cases/scene/scene_mesh_child.h"
+#include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 #include "core/io/vtu_writer.h"
-#include "studies/cli/args.h"
-#include "studies/tools/format.h"
 #include "studies/cli/options.h"
-#include "studies/parallel/process_group.h"
 #include "studies/cli/results_file.h"
+#include "studies/cli/scene_report.h"
 #include "studies/drivers/scene_file_study.h"
 #include "studies/drivers/scene_solve_output.h"
-#include "studies/cli/scene_report.h"
+#include "studies/parallel/process_group.h"
+#include "studies/tools/format.h"
 
 namespace thinlayer {
 
 namespace {
 
-struct SceneSolveInput {
-  std::string scene, mode = "limit", out, vtu;
-  double eps = 0;
-  bool json = false;
-  SolverKind solver = SolverKind::Fast;
-  SolverOptions options;
+struct SceneSolveInput : SolveRun {
+  std::string scene, mode = "limit";
+  std::size_t max_nodes = SceneSpec{}.max_nodes;
+  double eps = 0;  // 0: an engineer's glue at its own thickness (checked with the scene)
 };
 
-SceneSolveInput parse_solve(const std::vector<std::string>& argv) {
-  const Args args(argv, {"scene", "mode", "eps", "out", "vtu", "solver", "tolerance", "max-iterations", "omega"},
-                  {"json", "verbose"});
+// What applies to a scene file's solve; the bar's and the dovetail's options do not.
+const std::set<std::string> scene_solve_options = {"scene", "mode", "eps", "out", "vtu", "json", "verbose",
+                                                   "solver", "tolerance", "max-iterations", "omega", "max-nodes", "force"};
+
+// --max-nodes N (N >= 1), or the default.
+std::size_t max_nodes(const CLI::App& c, long long given_value) {
+  if (!given(c, "max-nodes")) return SceneSpec{}.max_nodes;
+  if (given_value < 1) throw std::invalid_argument("--max-nodes must be >= 1");
+  return static_cast<std::size_t>(given_value);
+}
+
+SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
+  require_only(c, scene_solve_options, "a scene file (--scene)");
   SceneSolveInput in;
-  in.scene = args.text("scene", "");
+  in.scene = a.scene;
   if (in.scene.empty()) throw std::invalid_argument("--scene needs a file");
-  in.mode = args.text("mode", "limit");
-  if (in.mode != "limit" && in.mode != "layer") throw std::invalid_argument("unknown mode '" + in.mode + "' (expected limit or layer)");
-  if (args.has("eps")) {  // without it, an engineer's glue's own thickness (checked with the scene)
-    in.eps = args.number("eps", 0);
+  in.max_nodes = max_nodes(c, a.max_nodes);
+  in.mode = given(c, "mode") ? a.mode : "limit";
+  if (given(c, "eps")) {  // without it, an engineer's glue's own thickness (checked with the scene)
+    in.eps = a.eps;
     if (!(in.eps > 0) || std::isinf(in.eps)) throw std::invalid_argument("--eps must be finite and > 0");
   }
-  in.solver = parse_solver(args.text("solver", "fast"));
-  in.options = parse_solver_options(args);
-  in.options.verbose = args.has("verbose");
-  in.json = args.has("json");
-  in.out = args.text("out", "");
-  in.vtu = args.text("vtu", "");
-  auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
-  if (!in.out.empty() && !in.vtu.empty() && target(in.out) == target(in.vtu))
-    throw std::invalid_argument("--out and --vtu name the same file");
+  parse_solve_run(c, a, in);
   return in;
 }
 
-void write_results(const std::string& path, const SceneFileScene& scene, const SceneFileBulk& bulk) {
-  auto out = open_results_file(path);
+void write_results(const std::string& path, const SceneFileScene& scene, const SceneFileBulk& bulk,
+                   const OutputRules& rules) {
+  auto out = open_results_file(path, rules);
   write_scene_file_scene(*out, scene, bulk);
   write_checks(*out, {});
   out->commit();
@@ -69,20 +69,22 @@ int fail(const std::string& command, const std::exception& e, int status) {
 
 }  // namespace
 
-bool names_scene(const std::vector<std::string>& argv) {
-  for (const std::string& a : argv)
-    if (a == "--scene" || a.rfind("--scene=", 0) == 0) return true;
-  return false;
-}
-
-int command_solve_scene(const std::vector<std::string>& argv) {
+int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   SceneSolveInput in;
+  std::vector<InputFile> inputs;
   std::unique_ptr<SceneFileBulk> bulk;
   try {
-    in = parse_solve(argv);
+    in = parse_solve(command, args);
+    SceneSpec spec = read_scene_spec(in.scene);
+    spec.max_nodes = in.max_nodes;
+    // The outputs first: never one of the run's inputs, never a file thinlayer did not write
+    // (unless --force), and writable; all before any work.
+    inputs = scene_inputs(spec);
+    if (!in.out.empty()) check_replaceable(in.out, OutputKind::Results, inputs, in.force);
+    if (!in.vtu.empty()) check_replaceable(in.vtu, OutputKind::Vtu, inputs, in.force);
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
-    bulk = std::make_unique<SceneFileBulk>(read_scene_spec(in.scene));
+    bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     check_scene_eps(*bulk, in.mode, in.eps);
   } catch (const std::invalid_argument& e) {
     return fail("solve", e, 2);
@@ -95,7 +97,7 @@ int command_solve_scene(const std::vector<std::string>& argv) {
     const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options, in.eps)
                                                 : solve_scene_file_layer(*bulk, in.eps, in.solver, in.options);
     if (!in.json) print_scene_solve(*bulk, in.mode, in.eps, s);
-    if (!in.out.empty()) write_results(in.out, s, *bulk);
+    if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force});
     if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
@@ -115,32 +117,39 @@ int command_solve_scene(const std::vector<std::string>& argv) {
   }
 }
 
-int command_study_scene(const std::string& study, const std::vector<std::string>& argv) {
+int command_study_scene(const std::string& study, const CLI::App& c, const StudyArgs& a) {
   SceneStudyOptions options;
+  OutputRules rules;
   std::string out_dir;
   std::unique_ptr<SceneFileBulk> bulk;
   try {
     if (study != "convergence" && study != "validity")
       throw std::invalid_argument("--scene applies to study convergence and study validity only");
     if (!refuse_unless_one_process("study " + study + " --scene")) return 2;
-    std::set<std::string> valued = {"scene", "out", "eps", "tolerance", "threads"};
-    if (study == "validity") valued.insert("bisection-steps");
-    const Args args(argv, valued, {"quiet"});
-    const std::string scene = args.text("scene", "");
+    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes", "force"};
+    if (study == "validity") allowed.insert("bisection-steps");
+    require_only(c, allowed, "study " + study + " --scene");
+    const std::string scene = a.scene;
     if (scene.empty()) throw std::invalid_argument("--scene needs a file");
-    out_dir = args.text("out", "");
+    out_dir = a.out;
     options.validity = study == "validity";
-    options.verbose = !args.has("quiet");
-    options.tolerance = args.number("tolerance", options.tolerance);
+    options.verbose = !a.quiet;
+    if (given(c, "tolerance")) options.tolerance = a.tolerance;
     if (!(options.tolerance > 0) || !(options.tolerance < 1)) throw std::invalid_argument("--tolerance must be in (0, 1)");
-    options.threads = args.integer("threads", 2);
+    options.threads = given(c, "threads") ? a.threads : 2;
     if (options.threads < 1 || options.threads > 64) throw std::invalid_argument("--threads must be in 1..64");
-    options.bisection_steps = args.integer("bisection-steps", 2);
+    options.bisection_steps = given(c, "bisection-steps") ? a.bisection_steps : 2;
     if (options.bisection_steps < 0 || options.bisection_steps > 20)
       throw std::invalid_argument("--bisection-steps must be in 0..20");
     SceneSpec spec = read_scene_spec(scene);
-    if (args.has("eps")) {
-      spec.eps = parse_number_list("eps", args.text("eps", ""));
+    spec.max_nodes = max_nodes(c, a.max_nodes);
+    rules = {scene_inputs(spec), a.force};
+    if (!out_dir.empty()) {  // the study's files in DIR, before the study (its report checks its own folder)
+      check_replaceable(out_dir + "/results.h5", OutputKind::Results, rules.inputs, rules.force);
+      check_replaceable(out_dir + "/bondline_fields.csv", OutputKind::Csv, rules.inputs, rules.force);
+    }
+    if (given(c, "eps")) {
+      spec.eps = a.eps.values;
       for (double e : spec.eps)
         if (!(e > 0) || std::isinf(e)) throw std::invalid_argument("--eps: thicknesses must be finite and > 0");
       if (spec.eps.size() < 3) throw std::invalid_argument("--eps: the convergence study needs at least 3 thicknesses");
@@ -153,7 +162,7 @@ int command_study_scene(const std::string& study, const std::vector<std::string>
     return fail("study", e, 2);
   }
   try {
-    auto out = open_results(out_dir);
+    auto out = open_results(out_dir, rules);
     if (out_dir.empty()) std::printf("(no --out DIR: the results are printed, not saved)\n");
     const SceneStudyResult r = run_scene_study(*bulk, options, out.get());
     int failed = 0;

@@ -6,15 +6,15 @@
 // 2 bad input (the scene file, its geometry, an option) or an output that cannot be written —
 // found before anything is written.
 #include <string>
-#include <vector>
+
+#include "studies/cli/command_solve.h"
+#include "studies/cli/command_study.h"
 
 namespace thinlayer {
 
-// Whether the arguments name a scene file (--scene X or --scene=X).
-bool names_scene(const std::vector<std::string>& argv);
-
-int command_solve_scene(const std::vector<std::string>& argv);
-// study: "convergence" or "validity"; argv: the arguments after the study's name.
-int command_study_scene(const std::string& study, const std::vector<std::string>& argv);
+// `solve` given --scene.
+int command_solve_scene(const CLI::App& command, const SolveArgs& args);
+// `study` given --scene; study: "convergence" or "validity" (any other is refused).
+int command_study_scene(const std::string& study, const CLI::App& command, const StudyArgs& args);
 
 }  // namespace thinlayer

@@ -10,10 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 #include "core/io/reference_tables.h"
 #include "core/io/vtu_writer.h"
-#include "studies/cli/args.h"
 #include "cases/bar/bar_scenes.h"
 #include "studies/cli/command_scene.h"
 #include "cases/dovetail/dovetail_scenes.h"
@@ -23,64 +23,11 @@
 
 namespace thinlayer {
 
-const char* const solve_help = R"(usage: thinlayer solve --case bar|dovetail [--mode limit|layer] [options] [--out FILE.h5] [--vtu FILE.vtu]
-       thinlayer solve --scene FILE.json [--mode limit|layer] [--eps E] [--out FILE.h5] [--vtu FILE.vtu] [--json]
-
-Solves one scene and prints its gap/slide/stick counts, iterations, residual and times.
-
-  --case NAME          bar (paper 4.3, Table 3) | dovetail (paper 3.2, Table 2)
-  --mode NAME          limit: the limit interface law on S (default)
-                       layer: the meshed layer of thickness --eps, Signorini-Coulomb on both faces
-  --eps E              layer thickness (layer mode), mm for the bar, L = 1 units for the dovetail;
-                       a thin layer: at most a tenth of the joint's size (bar 4 mm, dovetail 0.1)
-  --layer-elements N   Q1 elements through the layer's thickness, >= 2 (default 2)
-  --solver NAME        fast (default) | relaxation (the paper's algorithm)
-  --out FILE.h5        write the scene as a results file (SPEC section 4: layout, /environment,
-                       /checks, /scenes/ID); nothing is written on error; a symbolic link is
-                       followed, a directory, FIFO or device refused
-  --vtu FILE.vtu       write the scene for ParaView (mesh, displacement, interface fields on
-                       the nodes of S; body and stress per cell); nothing is written on error
-  --json               print one line of JSON on stdout instead of the text: counts,
-                       residual, stop cause, iterations, times (for scripts)
-  --verbose            the solver's progress lines on stderr
-
-Bar:
-  --row N              Table 3 row 1..6: (lambda_bar, mu_bar) from reference/table3_paper.csv
-  --lambda-bar X       lambda_bar in daN/mm^3, 0 <= X <= inf (instead of --row)
-  --mu-bar X           mu_bar in daN/mm^3, 0 <= X <= inf (instead of --row)
-  --friction F         Coulomb coefficient f >= 0 (default 1; limit mode only)
-  --scale S            multiplies lambda_bar and mu_bar (sensitivity study), default 1; the
-                       products must stay finite
-    In layer mode the layer has lambda_eps = eps lambda_bar, mu_eps = eps mu_bar.
-)" MESH_AND_SOLVER_HELP R"(
-Dovetail:
-  --law-case C         Table 2 case a..i: (gamma, delta) from reference/table2.csv
-  --gamma G --delta D  the exponents of lambda_eps = eps^G lambda_g, mu_eps = eps^D mu_g
-                       (G >= 0, 0 <= D < 2) instead of --law-case
-  --h-interface H      element size along S (default 0.025: 93 nodes on S)
-  --h-far H            element size far from S (default 0.1)
-  --friction F         Coulomb coefficient f >= 0 on S, or on both faces of the layer
-                       (default 0.5, SPEC 2.2; for sensitivity studies)
-
-Both cases:
-  --friction-path F1,F2,...
-                       fast solver: solve first with these Coulomb coefficients, in order, each
-                       solve warm started from the one before, then with the scene's own f, which
-                       alone decides convergence (a continuation for hard layer scenes; README,
-                       known limitations). Each Fi finite and >= 0; the scene's f must be > 0.
-
-Scene files (your own joint):
-  --scene FILE.json    a JSON scene naming the physical groups of a gmsh .geo or .msh (README,
-                       "Your own joint"; cases/lap_joint/lap_joint.json); with it only --mode,
-                       --eps (mm), --out, --vtu, --json, --solver, --tolerance, --max-iterations,
-                       --omega and --verbose apply
-
-Numbers are decimal (1e-3, 0.5, inf where a value may be infinite); no hex, no blanks.
-Exit status: 0 converged, 1 not converged (the result is still written), 2 bad input,
-including an output that cannot be written.
-)";
-
 namespace {
+
+const char* const solve_usage =
+    "usage: thinlayer solve --case bar|dovetail [--mode limit|layer] [options] [--out FILE.h5] [--vtu FILE.vtu]\n"
+    "       thinlayer solve --scene FILE.json [--mode limit|layer] [--eps E] [--out FILE.h5] [--vtu FILE.vtu] [--json]";
 
 const std::set<std::string> bar_only = {"row", "lambda-bar", "mu-bar", "scale", "nx", "ny", "element",
                                         "diagonal", "plane", "distortion", "load-scale"};
@@ -91,11 +38,8 @@ const std::set<std::string> dovetail_only = {"law-case", "gamma", "delta", "h-in
 // the layer is no thin layer, and its band would cross the adherents' elements.
 double thickest_layer(const std::string& case_name) { return case_name == "bar" ? bar::side / 10 : 0.1; }
 
-struct SolveInput {
-  std::string case_name, mode, law_case, out, vtu;
-  bool json = false;
-  SolverKind solver = SolverKind::Fast;
-  SolverOptions options;
+struct SolveInput : SolveRun {
+  std::string case_name, mode, law_case;
   double eps = 0;
   int layer_elements = 2;
   // bar
@@ -107,96 +51,76 @@ struct SolveInput {
   double friction = dovetail::friction;
 };
 
-void parse_bar(const Args& args, SolveInput& in) {
-  in.bar_mesh = parse_bar_mesh(args);
+void parse_bar(const CLI::App& c, const SolveArgs& a, SolveInput& in) {
+  in.bar_mesh = parse_bar_mesh(c, a);
   double lambda_bar = 0, mu_bar = 0;
-  if (args.has("row")) {
-    if (args.has("lambda-bar") || args.has("mu-bar")) throw std::invalid_argument("give either --row or --lambda-bar/--mu-bar");
-    const int row = args.integer("row", 0);
+  if (given(c, "row")) {
+    if (given(c, "lambda-bar") || given(c, "mu-bar")) throw std::invalid_argument("give either --row or --lambda-bar/--mu-bar");
     const auto table = load_table3_paper();
-    if (row < 1 || row > static_cast<int>(table.size()))
-      throw std::invalid_argument("unknown Table 3 row " + std::to_string(row) + " (expected 1.." + std::to_string(table.size()) + ")");
-    lambda_bar = table[row - 1].lambda_bar;
-    mu_bar = table[row - 1].mu_bar;
-    in.law_case = "table3-row-" + std::to_string(row);
+    if (a.row < 1 || a.row > static_cast<int>(table.size()))
+      throw std::invalid_argument("unknown Table 3 row " + std::to_string(a.row) + " (expected 1.." + std::to_string(table.size()) + ")");
+    lambda_bar = table[a.row - 1].lambda_bar;
+    mu_bar = table[a.row - 1].mu_bar;
+    in.law_case = "table3-row-" + std::to_string(a.row);
   } else {
-    if (!args.has("lambda-bar") || !args.has("mu-bar")) throw std::invalid_argument("give --row N, or both --lambda-bar and --mu-bar");
-    lambda_bar = args.number("lambda-bar", 0);
-    mu_bar = args.number("mu-bar", 0);
+    if (!given(c, "lambda-bar") || !given(c, "mu-bar")) throw std::invalid_argument("give --row N, or both --lambda-bar and --mu-bar");
+    lambda_bar = a.lambda_bar;
+    mu_bar = a.mu_bar;
   }
-  const double scale = args.number("scale", 1.0);
+  const double scale = given(c, "scale") ? a.scale : 1.0;
   if (!(scale > 0) || std::isinf(scale)) throw std::invalid_argument("--scale must be finite and > 0");
   if (std::isfinite(lambda_bar) && !std::isfinite(lambda_bar * scale))
-    throw std::invalid_argument("--scale: lambda_bar x scale overflows (" + plain(lambda_bar) + " x " + args.text("scale", "") + ")");
+    throw std::invalid_argument("--scale: lambda_bar x scale overflows (" + plain(lambda_bar) + " x " + plain(scale) + ")");
   if (std::isfinite(mu_bar) && !std::isfinite(mu_bar * scale))
-    throw std::invalid_argument("--scale: mu_bar x scale overflows (" + plain(mu_bar) + " x " + args.text("scale", "") + ")");
-  if (in.mode == "layer" && args.has("friction")) throw std::invalid_argument("--friction applies to the bar's limit mode only (its layer has f = 1 on both faces)");
-  in.law = InterfaceLaw::make(lambda_bar * scale, mu_bar * scale, args.number("friction", bar::friction));
+    throw std::invalid_argument("--scale: mu_bar x scale overflows (" + plain(mu_bar) + " x " + plain(scale) + ")");
+  if (in.mode == "layer" && given(c, "friction")) throw std::invalid_argument("--friction applies to the bar's limit mode only (its layer has f = 1 on both faces)");
+  in.law = InterfaceLaw::make(lambda_bar * scale, mu_bar * scale, given(c, "friction") ? a.friction : bar::friction);
   if (in.law_case.empty()) in.law_case = std::string(1, in.law.table1_case());
 }
 
-void parse_dovetail(const Args& args, SolveInput& in) {
-  in.dovetail_mesh.h_interface = args.number("h-interface", in.dovetail_mesh.h_interface);
-  in.dovetail_mesh.h_far = args.number("h-far", in.dovetail_mesh.h_far);
+void parse_dovetail(const CLI::App& c, const SolveArgs& a, SolveInput& in) {
+  if (given(c, "h-interface")) in.dovetail_mesh.h_interface = a.h_interface;
+  if (given(c, "h-far")) in.dovetail_mesh.h_far = a.h_far;
   in.dovetail_mesh.layer_elements = in.layer_elements;
-  in.friction = args.number("friction", dovetail::friction);
-  if (args.has("law-case")) {
-    if (args.has("gamma") || args.has("delta")) throw std::invalid_argument("give either --law-case or --gamma/--delta");
-    const std::string c = args.text("law-case", "");
-    if (c.size() != 1) throw std::invalid_argument("unknown law case '" + c + "' (expected a..i)");
-    in.exponents = dovetail::exponents_of(c[0]);
-    in.law_case = c;
+  if (given(c, "friction")) in.friction = a.friction;
+  if (given(c, "law-case")) {
+    if (given(c, "gamma") || given(c, "delta")) throw std::invalid_argument("give either --law-case or --gamma/--delta");
+    if (a.law_case.size() != 1) throw std::invalid_argument("unknown law case '" + a.law_case + "' (expected a..i)");
+    in.exponents = dovetail::exponents_of(a.law_case[0]);
+    in.law_case = a.law_case;
   } else {
-    if (!args.has("gamma") || !args.has("delta")) throw std::invalid_argument("give --law-case C, or both --gamma and --delta");
-    in.exponents = dovetail::validated({args.number("gamma", 0), args.number("delta", 0)});
+    if (!given(c, "gamma") || !given(c, "delta")) throw std::invalid_argument("give --law-case C, or both --gamma and --delta");
+    in.exponents = dovetail::validated({a.gamma, a.delta});
   }
 }
 
-SolveInput parse_solve(const std::vector<std::string>& argv) {
-  std::set<std::string> valued = {"case", "mode", "solver", "out", "vtu", "eps", "layer-elements", "friction",
-                                  "friction-path"};
-  valued.insert(mesh_and_solver_options.begin(), mesh_and_solver_options.end());
-  valued.insert(bar_only.begin(), bar_only.end());
-  valued.insert(dovetail_only.begin(), dovetail_only.end());
-  const Args args(argv, valued, {"verbose", "json"});
-
+SolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   SolveInput in;
-  in.case_name = args.text("case", "");
-  if (in.case_name.empty()) throw std::invalid_argument("--case is required (bar or dovetail)");
-  if (in.case_name != "bar" && in.case_name != "dovetail")
-    throw std::invalid_argument("unknown case '" + in.case_name + "' (expected bar or dovetail)");
+  in.case_name = a.case_name;
+  if (!given(c, "case")) throw std::invalid_argument("--case is required (bar or dovetail)");
+  if (given(c, "max-nodes")) throw std::invalid_argument("--max-nodes applies to a scene file (--scene) only");
   for (const auto& name : in.case_name == "bar" ? dovetail_only : bar_only)
-    if (args.has(name)) throw std::invalid_argument("--" + name + " does not apply to the " + in.case_name);
-  in.mode = args.text("mode", "limit");
-  if (in.mode != "limit" && in.mode != "layer") throw std::invalid_argument("unknown mode '" + in.mode + "' (expected limit or layer)");
+    if (given(c, name)) throw std::invalid_argument("--" + name + " does not apply to the " + in.case_name);
+  in.mode = given(c, "mode") ? a.mode : "limit";
   if (in.mode == "layer") {
-    if (!args.has("eps")) throw std::invalid_argument("layer mode needs --eps");
-    in.eps = args.number("eps", 0);
+    if (!given(c, "eps")) throw std::invalid_argument("layer mode needs --eps");
+    in.eps = a.eps;
     if (!(in.eps > 0) || std::isinf(in.eps)) throw std::invalid_argument("--eps must be finite and > 0");
     if (in.eps > thickest_layer(in.case_name))
-      throw std::invalid_argument("--eps " + args.text("eps", "") + " is no thin layer for the " + in.case_name +
+      throw std::invalid_argument("--eps " + plain(in.eps) + " is no thin layer for the " + in.case_name +
                                   ": at most " + plain(thickest_layer(in.case_name)) +
                                   (in.case_name == "bar" ? " mm" : "") + " (a tenth of its size)");
-  } else if (args.has("eps") || args.has("layer-elements")) {
+  } else if (given(c, "eps") || given(c, "layer-elements")) {
     throw std::invalid_argument("--eps and --layer-elements apply to the layer mode only");
   }
-  in.layer_elements = args.integer("layer-elements", 2);
+  if (given(c, "layer-elements")) in.layer_elements = a.layer_elements;
   if (in.layer_elements < 2) throw std::invalid_argument("--layer-elements must be >= 2");
-  in.solver = parse_solver(args.text("solver", "fast"));
-  in.options = parse_solver_options(args);
-  in.options.verbose = args.has("verbose");
-  in.json = args.has("json");
-  in.out = args.text("out", "");
-  in.vtu = args.text("vtu", "");
-  // absolute() first: weakly_canonical leaves a relative path with no existing prefix as it is.
-  auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
-  if (!in.out.empty() && !in.vtu.empty() && target(in.out) == target(in.vtu))
-    throw std::invalid_argument("--out and --vtu name the same file");
-  if (in.case_name == "bar") parse_bar(args, in);
-  else parse_dovetail(args, in);
-  if (args.has("friction-path")) {
+  parse_solve_run(c, a, in);
+  if (in.case_name == "bar") parse_bar(c, a, in);
+  else parse_dovetail(c, a, in);
+  if (given(c, "friction-path")) {
     if (in.solver != SolverKind::Fast) throw std::invalid_argument("--friction-path applies to the fast solver only");
-    in.options.friction_path = friction_path_multipliers(args.text("friction-path", ""),
+    in.options.friction_path = friction_path_multipliers(a.friction_path.values,
                                                          in.case_name == "bar" ? in.law.friction : in.friction);
   }
   return in;
@@ -332,21 +256,110 @@ std::string summary_line(const SolveInput& in, const SceneRecord& record, const 
   return j.dump();
 }
 
-// The scene as a results file (SPEC §4): layout, environment, the scene, /checks (empty).
-void write_results(const std::string& path, const SceneRecord& record) {
-  auto out = open_results_file(path);
-  write_scene(*out, record);
-  write_checks(*out, {});
-  out->commit();
-}
 
 }  // namespace
 
-int command_solve(const std::vector<std::string>& argv) {
-  if (names_scene(argv)) return command_solve_scene(argv);  // the user's own joint (SPEC §5)
+CLI::App* declare_solve(CLI::App& thinlayer, SolveArgs& a) {
+  CLI::App* c = thinlayer.add_subcommand(
+      "solve", "solve one scene (bar or dovetail, limit or layer mode, or your own joint)\n\n"
+               "Solves one scene and prints its gap/slide/stick counts, iterations, residual and times.");
+  c->formatter(help_formatter(solve_usage));
+  c->set_help_flag("-h,--help", "this help");
+  c->allow_extras();  // refused by parse_command, with the project's message
+  c->add_option("--case", a.case_name, "bar (paper 4.3, Table 3) | dovetail (paper 3.2, Table 2)")
+      ->type_name("NAME")->check(one_of("case", {"bar", "dovetail"}));
+  c->add_option("--mode", a.mode,
+                "limit: the limit interface law on S (default)\n"
+                "layer: the meshed layer of thickness --eps, Signorini-Coulomb on both faces")
+      ->type_name("NAME")->check(one_of("mode", {"limit", "layer"}));
+  c->add_option("--eps", a.eps,
+                "layer thickness (layer mode), mm for the bar, L = 1 units for the dovetail;\n"
+                "a thin layer: at most a tenth of the joint's size (bar 4 mm, dovetail 0.1)")
+      ->type_name("E")->check(decimal("eps"));
+  c->add_option("--layer-elements", a.layer_elements, "Q1 elements through the layer's thickness, >= 2 (default 2)")
+      ->type_name("N")->transform(integer("layer-elements"));
+  c->add_option("--solver", a.solver, "fast (default) | relaxation (the paper's algorithm)")
+      ->type_name("NAME")->check(one_of("solver", {"fast", "relaxation"}));
+  c->add_option("--out", a.out,
+                "write the scene as a results file (SPEC section 4: layout, /environment,\n"
+                "/checks, /scenes/ID); nothing is written on error; a symbolic link is\n"
+                "followed, a directory, FIFO or device refused")
+      ->type_name("FILE.h5");
+  c->add_option("--vtu", a.vtu,
+                "write the scene for ParaView (mesh, displacement, interface fields on\n"
+                "the nodes of S; body and stress per cell); nothing is written on error")
+      ->type_name("FILE.vtu");
+  c->add_flag("--json", a.json,
+              "print one line of JSON on stdout instead of the text: counts,\n"
+              "residual, stop cause, iterations, times (for scripts)");
+  c->add_flag("--verbose", a.verbose, "the solver's progress lines on stderr");
+  c->add_flag("--force", a.force,
+              "replace an existing --out or --vtu file that thinlayer did not write (never\n"
+              "an input of the run: the scene file, its geometry or mesh)");
+
+  const std::string bar = "Bar";
+  c->add_option("--row", a.row, "Table 3 row 1..6: (lambda_bar, mu_bar) from reference/table3_paper.csv")
+      ->type_name("N")->transform(integer("row"))->group(bar);
+  c->add_option("--lambda-bar", a.lambda_bar, "lambda_bar in daN/mm^3, 0 <= X <= inf (instead of --row)")
+      ->type_name("X")->check(decimal("lambda-bar"))->group(bar);
+  c->add_option("--mu-bar", a.mu_bar,
+                "mu_bar in daN/mm^3, 0 <= X <= inf (instead of --row)\n"
+                "In layer mode the layer has lambda_eps = eps lambda_bar, mu_eps = eps mu_bar.")
+      ->type_name("X")->check(decimal("mu-bar"))->group(bar);
+  c->add_option("--scale", a.scale,
+                "multiplies lambda_bar and mu_bar (sensitivity study), default 1; the\n"
+                "products must stay finite")
+      ->type_name("S")->check(decimal("scale"))->group(bar);
+  declare_bar_mesh_options(*c, a);
+
+  const std::string dovetail = "Dovetail";
+  c->add_option("--law-case", a.law_case, "Table 2 case a..i: (gamma, delta) from reference/table2.csv")
+      ->type_name("C")->group(dovetail);
+  c->add_option("--gamma", a.gamma, "the exponent of lambda_eps = eps^G lambda_g, G >= 0 (with --delta,\ninstead of --law-case)")
+      ->type_name("G")->check(decimal("gamma"))->group(dovetail);
+  c->add_option("--delta", a.delta, "the exponent of mu_eps = eps^D mu_g, 0 <= D < 2 (with --gamma)")
+      ->type_name("D")->check(decimal("delta"))->group(dovetail);
+  c->add_option("--h-interface", a.h_interface, "element size along S (default 0.025: 93 nodes on S)")
+      ->type_name("H")->check(decimal("h-interface"))->group(dovetail);
+  c->add_option("--h-far", a.h_far, "element size far from S (default 0.1)")
+      ->type_name("H")->check(decimal("h-far"))->group(dovetail);
+
+  const std::string both = "Both cases";
+  c->add_option("--friction", a.friction,
+                "Coulomb coefficient f >= 0: the bar's on S (default 1; limit mode only);\n"
+                "the dovetail's on S, or on both faces of the layer (default 0.5, SPEC 2.2;\n"
+                "for sensitivity studies)")
+      ->type_name("F")->check(decimal("friction"))->group(both);
+  c->add_option("--friction-path", a.friction_path,
+                "fast solver: solve first with these Coulomb coefficients, in order, each\n"
+                "solve warm started from the one before, then with the scene's own f, which\n"
+                "alone decides convergence (a continuation for hard layer scenes; README,\n"
+                "known limitations). Each Fi finite and >= 0; the scene's f must be > 0.")
+      ->type_name("F1,F2,...")->check(number_list("friction-path"))->group(both);
+  declare_solver_options(*c, a);
+
+  c->add_option("--scene", a.scene,
+                "a JSON scene naming the physical groups of a gmsh .geo or .msh (README,\n"
+                "\"Your own joint\"; cases/lap_joint/lap_joint.json); with it only --mode,\n"
+                "--eps (mm), --out, --vtu, --json, --solver, --tolerance, --max-iterations,\n"
+                "--omega, --verbose, --force and --max-nodes apply")
+      ->type_name("FILE.json")->group("Scene files (your own joint)");
+  c->add_option("--max-nodes", a.max_nodes,
+                "refuse a scene whose mesh would have more nodes than N, before meshing\n"
+                "(estimated from the geometry and mesh_size; default 2000000)")
+      ->type_name("N")->transform(integer("max-nodes"))->group("Scene files (your own joint)");
+  c->footer(
+      "Numbers are decimal (1e-3, 0.5, inf where a value may be infinite); no hex, no blanks.\n"
+      "Exit status: 0 converged, 1 not converged (the result is still written), 2 bad input,\n"
+      "including an output that cannot be written.");
+  return c;
+}
+
+int command_solve(const CLI::App& command, const SolveArgs& args) {
+  if (given(command, "scene")) return command_solve_scene(command, args);  // the user's own joint (SPEC §5)
   SolveInput in;
   try {
-    in = parse_solve(argv);
+    in = parse_solve(command, args);
   } catch (const std::exception& e) {
     std::cerr << "thinlayer solve: " << e.what() << "\n";
     return 2;
@@ -354,11 +367,13 @@ int command_solve(const std::vector<std::string>& argv) {
   text_out = in.json ? nullptr : stdout;
   try {
     // Check the outputs first: an unwritable path is bad input, found before any work.
+    if (!in.out.empty()) check_replaceable(in.out, OutputKind::Results, {}, in.force);
+    if (!in.vtu.empty()) check_replaceable(in.vtu, OutputKind::Vtu, {}, in.force);
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
     const auto [record, report] = solve_scene(in);
     if (!in.out.empty()) {
-      write_results(in.out, record);
+      write_scene_file(in.out, record, {{}, in.force});
       say("  wrote %s\n", in.out.c_str());
     }
     if (!in.vtu.empty()) {

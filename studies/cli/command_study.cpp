@@ -14,7 +14,6 @@
 
 #include "core/io/h5_writer.h"
 #include "core/io/output_target.h"
-#include "studies/cli/args.h"
 #include "studies/cli/command_scene.h"
 #include "studies/drivers/scene_file_study.h"
 #include "studies/tools/stopwatch.h"
@@ -40,83 +39,11 @@
 
 namespace thinlayer {
 
-const char* const study_help = R"(usage: thinlayer study NAME [--out DIR] [options]
-
-Without --out the study prints its tables and saves nothing. An option the study does not
-read is refused, as is an option given twice or a stray argument.
-
-Studies:
-  table3       S1: the bar's Table 3, both solvers, paper vs the project's baseline, the
-               sensitivity study, the transitions along AD under refinement, and the layer
-               mode at eps 1e-2, 1e-3, 1e-4
-  dovetail     the nine cases of Table 2 in limit mode and in layer mode at every eps
-               (SPEC 2.2): statuses per face and combined, iterations, residuals, times
-  convergence  S2: distances between the layer and limit modes of the dovetail at every eps,
-               and the rates from the layer model's Cauchy differences along a finer eps
-               grid against the predicted ones (studies/convergence_rates.md)
-  validity     S3 (runs S2 for its samples): the largest eps at which the limit law stays
-               within 1 % and 5 % of the layer model, by bisection on eps
-  thresholds   S4: the error of replacing a finite law by the 0 or inf law across the
-               paper's 3 % and 30x thresholds
-  asymptotics  S2, S3 and S4 together, sharing their scenes
-  timing       S5: wall time against error for the fast solver, the relaxation and the Siconos
-               peers (fc2d NSGS, Lemke) on the bar at 32..512 contact nodes, the dovetail's
-               limit mode at three levels and its layer mode at eps 1e-2 and 1e-4; ratios to
-               one linear solve, growth exponents, the targets of issue 5; and the time each
-               shortcut of the fast solver saves (skip what a scene doesn't need)
-  stress       S5 stress tests: eps to 1e-8, stiffness contrast to 1e-12, f from 0 to 10,
-               distorted meshes, interfaces that open everywhere, capped solves; each scene
-               converges or stops with a named cause (iteration cap, singular system, loss of
-               accuracy with a condition estimate), and no NaN/Inf is written
-
-Your own joint: study convergence --scene FILE.json, study validity --scene FILE.json run S2
-and S3 on a scene file (README, "Your own joint"); options --out, --eps LIST (mm), --tolerance
-(default 1e-10 there), --threads, --quiet and (validity) --bisection-steps.
-
-Options:
-  --out DIR          write DIR/results.h5 (the scenes and the study's tables)
-  --repeats N        table3, timing: repetitions per timed solve, medians reported (default 3)
-  --quick            table3: skip the sensitivity and refinement parts; S2: skip the floor
-                     study (three mesh levels); stress: skip the scenes at eps <= 1e-6 and
-                     the slowest contrast; timing: bar levels 32-128, peers at 32 and 64,
-                     dovetail h 0.05 and 0.025, layer eps 1e-4
-  --quiet            no progress lines on stderr
-  --cases LETTERS    dovetail studies: the cases to run, each once (default abcdefghi)
-  --eps LIST         dovetail studies: comma-separated thicknesses, each in (0, 0.1]
-                     (default 1e-2,5e-3,1e-3,5e-4,1e-4)
-  --rate-eps LIST    S2: the decreasing eps grid of the Cauchy differences (default
-                     1e-4 ... 1e-8, ratio 10^-1/2); the rate is fitted on eps <= 1e-4
-  --tolerance T      S2/S3: the SPEC residual the scenes are solved to (default 1e-10; below
-                     it, case d is re-solved at 1e-10 to show how much the distances move)
-  --threads N        S2/S3: layer-mode scenes solved in parallel (default 2)
-  --bisection-steps N  S3: bisection steps per bracket (default 2)
-  --relaxation-cap N dovetail: also run the relaxation solver, capped at N sweeps
-  --friction-path F1,F2,...
-                     dovetail: solve every layer scene along this continuation in the Coulomb
-                     coefficient first (as `thinlayer solve --friction-path`), then at f = 0.5
-
-Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input.
-)";
-
-const char* const verify_help = R"(usage: thinlayer verify --out DIR [--repeats N] [--quiet]
-
-Runs the studies S1 (table3), S2-S4 (convergence, validity, thresholds), S5 (timing, quick,
-and stress), and S2-S3 on the shipped single-lap shear joint (cases/lap_joint, a scene file),
-and writes
-  DIR/results.h5           every scene, study table and check, the environment
-  DIR/summary.json         every check: id, pass, expected, got, tolerance; and the timings
-  DIR/report/index.html    the report, with its figures (made from results.h5 alone:
-                           /usr/bin/python3 report/make_report.py DIR/results.h5 DIR/report)
-Options: those of `thinlayer study` that the studies it runs read: --out, --quiet, --repeats,
---quick, --cases, --eps, --rate-eps, --tolerance, --threads, --bisection-steps.
-Exit status: 0 only if every check passes; 1 if one fails; 2 on bad input or a failure to
-write an output.
-)";
-
 namespace {
 
 struct StudyInput {
   std::string out_dir;
+  bool force = false;
   Table3StudyOptions table3;
   DovetailStudyOptions dovetail;
   ConvergenceStudyOptions convergence;
@@ -133,58 +60,56 @@ struct StudyInput {
 
 // The options each study reads; any other is refused rather than silently ignored.
 const std::map<std::string, std::set<std::string>> study_options = {
-    {"table3", {"out", "quiet", "repeats", "quick"}},
-    {"dovetail", {"out", "quiet", "cases", "eps", "relaxation-cap", "friction-path"}},
-    {"convergence", {"out", "quiet", "quick", "cases", "eps", "rate-eps", "tolerance", "threads"}},
-    {"validity", {"out", "quiet", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
-    {"thresholds", {"out", "quiet"}},
-    {"asymptotics", {"out", "quiet", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
-    {"timing", {"out", "quiet", "repeats", "quick"}},
-    {"stress", {"out", "quiet", "quick"}},
+    {"table3", {"out", "quiet", "force", "repeats", "quick"}},
+    {"dovetail", {"out", "quiet", "force", "cases", "eps", "relaxation-cap", "friction-path"}},
+    {"convergence", {"out", "quiet", "force", "quick", "cases", "eps", "rate-eps", "tolerance", "threads"}},
+    {"validity", {"out", "quiet", "force", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
+    {"thresholds", {"out", "quiet", "force"}},
+    {"asymptotics", {"out", "quiet", "force", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
+    {"timing", {"out", "quiet", "force", "repeats", "quick"}},
+    {"stress", {"out", "quiet", "force", "quick"}},
     // verify runs table3, asymptotics, the quick timing and stress.
-    {"verify", {"out", "quiet", "repeats", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
+    {"verify", {"out", "quiet", "force", "repeats", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
 };
 
 // The dovetail's thickest thin layer (its layer meshes stop there; SPEC §4: a layer thicker
 // than makes geometric sense is refused).
 constexpr double thickest_dovetail_layer = 0.1;
 
-StudyInput parse(const std::vector<std::string>& argv, const std::string& name) {
-  const Args args(argv, {"out", "repeats", "cases", "eps", "rate-eps", "relaxation-cap", "tolerance", "threads",
-                   "bisection-steps", "friction-path"},
-                  {"quick", "quiet"});
-  require_only(args, study_options.at(name), name == "verify" ? "verify" : "study " + name);
+StudyInput parse(const CLI::App& c, const StudyArgs& a, const std::string& name) {
+  require_only(c, study_options.at(name), name == "verify" ? "verify" : "study " + name);
   const bool require_out = name == "verify";
   StudyInput in;
-  in.out_dir = args.text("out", "");
+  in.out_dir = a.out;
+  in.force = a.force;
   if (require_out && in.out_dir.empty()) throw std::invalid_argument("--out DIR is required");
-  in.table3.repeats = args.integer("repeats", 3);
+  in.table3.repeats = given(c, "repeats") ? a.repeats : 3;
   if (in.table3.repeats < 1) throw std::invalid_argument("--repeats must be >= 1");
-  if (args.has("quick")) {
+  if (a.quick) {
     in.table3.sensitivity = in.table3.refinement = false;
     in.stress.quick = true;
     in.timing = TimingStudyOptions::quick();
     in.floor_study = false;
   }
   in.timing.repeats = in.table3.repeats;
-  in.verbose = !args.has("quiet");
+  in.verbose = !a.quiet;
   in.table3.verbose = in.dovetail.verbose = in.stress.verbose = in.verbose;
-  in.dovetail.cases = args.text("cases", in.dovetail.cases);
+  if (given(c, "cases")) in.dovetail.cases = a.cases;
   for (char c : in.dovetail.cases)
     if (c < 'a' || c > 'i') throw std::invalid_argument("--cases: unknown case '" + std::string(1, c) + "' (expected a..i)");
   if (in.dovetail.cases.empty()) throw std::invalid_argument("--cases: give at least one case");
   for (size_t i = 0; i < in.dovetail.cases.size(); ++i)
     if (in.dovetail.cases.find(in.dovetail.cases[i]) != i)
       throw std::invalid_argument("--cases: case '" + std::string(1, in.dovetail.cases[i]) + "' is given twice");
-  if (args.has("eps")) {
-    in.dovetail.eps = parse_number_list("eps", args.text("eps", ""));
+  if (given(c, "eps")) {
+    in.dovetail.eps = a.eps.values;
     for (double eps : in.dovetail.eps)
       if (!(eps > 0) || std::isinf(eps)) throw std::invalid_argument("--eps: thicknesses must be finite and > 0");
       else if (eps > thickest_dovetail_layer)
         throw std::invalid_argument("--eps: " + plain(eps) + " is no thin layer for the dovetail: at most 0.1 (a tenth of its size)");
   }
-  if (args.has("rate-eps")) {
-    in.rates.eps = parse_number_list("rate-eps", args.text("rate-eps", ""));
+  if (given(c, "rate-eps")) {
+    in.rates.eps = a.rate_eps.values;
     for (size_t k = 0; k < in.rates.eps.size(); ++k)
       if (!(in.rates.eps[k] > 0) || std::isinf(in.rates.eps[k]) || in.rates.eps[k] > thickest_dovetail_layer)
         throw std::invalid_argument("--rate-eps: thicknesses must be in (0, 0.1]");
@@ -192,23 +117,23 @@ StudyInput parse(const std::vector<std::string>& argv, const std::string& name) 
         throw std::invalid_argument("--rate-eps: the grid must decrease (its neighbours are differenced)");
     if (in.rates.eps.size() < 2) throw std::invalid_argument("--rate-eps: give at least two thicknesses");
   }
-  if (args.has("friction-path"))
-    in.dovetail.friction_path = friction_path_multipliers(args.text("friction-path", ""), dovetail::friction);
-  in.dovetail.relaxation_cap = args.integer("relaxation-cap", 0);
+  if (given(c, "friction-path"))
+    in.dovetail.friction_path = friction_path_multipliers(a.friction_path.values, dovetail::friction);
+  in.dovetail.relaxation_cap = given(c, "relaxation-cap") ? a.relaxation_cap : 0;
   if (in.dovetail.relaxation_cap < 0) throw std::invalid_argument("--relaxation-cap must be >= 0");
   in.convergence.cases = in.dovetail.cases;
   in.convergence.eps = in.dovetail.eps;
-  in.convergence.tolerance = args.number("tolerance", in.convergence.tolerance);
+  if (given(c, "tolerance")) in.convergence.tolerance = a.tolerance;
   in.rates.cases = in.convergence.cases;
   in.rates.tolerance = in.convergence.tolerance;
   in.floor.tolerance = in.convergence.tolerance;
   if (!(in.convergence.tolerance > 0) || !(in.convergence.tolerance < 1))
     throw std::invalid_argument("--tolerance must be in (0, 1)");
-  in.threads = args.integer("threads", 2);
+  in.threads = given(c, "threads") ? a.threads : 2;
   if (in.threads < 1 || in.threads > 64) throw std::invalid_argument("--threads must be in 1..64");
   in.floor.threads = in.threads;
   in.floor.verbose = in.verbose;
-  in.validity.bisection_steps = args.integer("bisection-steps", 2);
+  in.validity.bisection_steps = given(c, "bisection-steps") ? a.bisection_steps : 2;
   if (in.validity.bisection_steps < 0 || in.validity.bisection_steps > 20)
     throw std::invalid_argument("--bisection-steps must be in 0..20");
   return in;
@@ -291,29 +216,150 @@ int report_checks(const std::vector<Check>& checks) {
 
 }  // namespace
 
-int command_study(const std::vector<std::string>& argv) {
-  static const std::vector<std::string> names = {"table3",     "dovetail",    "convergence", "validity",
-                                                 "thresholds", "asymptotics", "timing",   "stress"};
+namespace {
+
+const std::vector<std::string> study_names = {"table3",     "dovetail",    "convergence", "validity",
+                                              "thresholds", "asymptotics", "timing",      "stress"};
+
+// The options of `study` and `verify`, with their help; on verify, those it does not read are
+// declared too (so that giving one says "does not apply to verify") but not shown.
+void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string>& shown) {
+  auto group = [&](CLI::Option* option) {
+    const std::string name = option->get_lnames().front();
+    option->group(shown.count(name) ? "Options" : "");
+  };
+  group(c.add_option("--out", a.out, "write DIR/results.h5 (the scenes and the study's tables)")->type_name("DIR"));
+  group(c.add_option("--repeats", a.repeats, "table3, timing: repetitions per timed solve, medians reported (default 3)")
+            ->type_name("N")->transform(integer("repeats")));
+  group(c.add_flag("--quick", a.quick,
+                   "table3: skip the sensitivity and refinement parts; S2: skip the floor\n"
+                   "study (three mesh levels); stress: skip the scenes at eps <= 1e-6 and\n"
+                   "the slowest contrast; timing: bar levels 32-128, peers at 32 and 64,\n"
+                   "dovetail h 0.05 and 0.025, layer eps 1e-4"));
+  group(c.add_flag("--quiet", a.quiet, "no progress lines on stderr"));
+  group(c.add_flag("--force", a.force, "replace DIR's files that thinlayer did not write (results.h5, summary.json)"));
+  group(c.add_option("--cases", a.cases, "dovetail studies: the cases to run, each once (default abcdefghi)")->type_name("LETTERS"));
+  group(c.add_option("--eps", a.eps,
+                     "dovetail studies: comma-separated thicknesses, each in (0, 0.1]\n"
+                     "(default 1e-2,5e-3,1e-3,5e-4,1e-4); with --scene, mm")
+            ->type_name("LIST")->check(number_list("eps")));
+  group(c.add_option("--rate-eps", a.rate_eps,
+                     "S2: the decreasing eps grid of the Cauchy differences (default\n"
+                     "1e-4 ... 1e-8, ratio 10^-1/2); the rate is fitted on eps <= 1e-4")
+            ->type_name("LIST")->check(number_list("rate-eps")));
+  group(c.add_option("--tolerance", a.tolerance,
+                     "S2/S3: the SPEC residual the scenes are solved to (default 1e-10; below\n"
+                     "it, case d is re-solved at 1e-10 to show how much the distances move)")
+            ->type_name("T")->check(decimal("tolerance")));
+  group(c.add_option("--threads", a.threads, "S2/S3: layer-mode scenes solved in parallel (default 2)")
+            ->type_name("N")->transform(integer("threads")));
+  group(c.add_option("--bisection-steps", a.bisection_steps, "S3: bisection steps per bracket (default 2)")
+            ->type_name("N")->transform(integer("bisection-steps")));
+  group(c.add_option("--relaxation-cap", a.relaxation_cap, "dovetail: also run the relaxation solver, capped at N sweeps")
+            ->type_name("N")->transform(integer("relaxation-cap")));
+  group(c.add_option("--friction-path", a.friction_path,
+                     "dovetail: solve every layer scene along this continuation in the Coulomb\n"
+                     "coefficient first (as `thinlayer solve --friction-path`), then at f = 0.5")
+            ->type_name("F1,F2,...")->check(number_list("friction-path")));
+  group(c.add_option("--scene", a.scene,
+                     "convergence, validity: S2 (and S3) on your own joint, a scene file\n"
+                     "(README, \"Your own joint\")")
+            ->type_name("FILE.json"));
+  group(c.add_option("--max-nodes", a.max_nodes,
+                     "with --scene: refuse a mesh of more nodes than N, before meshing\n"
+                     "(estimated from the geometry and mesh_size; default 2000000)")
+            ->type_name("N")->transform(integer("max-nodes")));
+}
+
+}  // namespace
+
+CLI::App* declare_study(CLI::App& thinlayer, StudyArgs& a) {
+  CLI::App* c = thinlayer.add_subcommand(
+      "study",
+      "run a study: table3, dovetail, convergence, validity, thresholds, asymptotics, timing or stress\n"
+      "\n"
+      "Without --out the study prints its tables and saves nothing. An option the study does not\n"
+      "read is refused, as is an option given twice or a stray argument.\n"
+      "\n"
+      "Studies:\n"
+      "  table3       S1: the bar's Table 3, both solvers, paper vs the project's baseline, the\n"
+      "               sensitivity study, the transitions along AD under refinement, and the layer\n"
+      "               mode at eps 1e-2, 1e-3, 1e-4\n"
+      "  dovetail     the nine cases of Table 2 in limit mode and in layer mode at every eps\n"
+      "               (SPEC 2.2): statuses per face and combined, iterations, residuals, times\n"
+      "  convergence  S2: distances between the layer and limit modes of the dovetail at every eps,\n"
+      "               and the rates from the layer model's Cauchy differences along a finer eps\n"
+      "               grid against the predicted ones (studies/convergence_rates.md)\n"
+      "  validity     S3 (runs S2 for its samples): the largest eps at which the limit law stays\n"
+      "               within 1 % and 5 % of the layer model, by bisection on eps\n"
+      "  thresholds   S4: the error of replacing a finite law by the 0 or inf law across the\n"
+      "               paper's 3 % and 30x thresholds\n"
+      "  asymptotics  S2, S3 and S4 together, sharing their scenes\n"
+      "  timing       S5: wall time against error for the fast solver, the relaxation and the Siconos\n"
+      "               peers (fc2d NSGS, Lemke) on the bar at 32..512 contact nodes, the dovetail's\n"
+      "               limit mode at three levels and its layer mode at eps 1e-2 and 1e-4; ratios to\n"
+      "               one linear solve, growth exponents, the targets of issue 5; and the time each\n"
+      "               shortcut of the fast solver saves (skip what a scene doesn't need)\n"
+      "  stress       S5 stress tests: eps to 1e-8, stiffness contrast to 1e-12, f from 0 to 10,\n"
+      "               distorted meshes, interfaces that open everywhere, capped solves; each scene\n"
+      "               converges or stops with a named cause (iteration cap, singular system, loss of\n"
+      "               accuracy with a condition estimate), and no NaN/Inf is written\n"
+      "\n"
+      "Your own joint: study convergence --scene FILE.json, study validity --scene FILE.json run S2\n"
+      "and S3 on a scene file (README, \"Your own joint\"); options --out, --eps LIST (mm), --tolerance\n"
+      "(default 1e-10 there), --threads, --quiet, --max-nodes and (validity) --bisection-steps.");
+  c->formatter(help_formatter("usage: thinlayer study NAME [--out DIR] [options]"));
+  c->set_help_flag("-h,--help", "this help");
+  c->allow_extras();
+  c->add_option("name", a.name)->check(one_of("study", study_names))->group("");
+  std::set<std::string> all;
+  for (const auto& [study, options] : study_options) all.insert(options.begin(), options.end());
+  all.insert({"relaxation-cap", "friction-path", "scene", "max-nodes"});
+  declare_study_options(*c, a, all);
+  c->footer("Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input.");
+  return c;
+}
+
+CLI::App* declare_verify(CLI::App& thinlayer, StudyArgs& a) {
+  CLI::App* c = thinlayer.add_subcommand(
+      "verify",
+      "run every study, write the summary and the report\n"
+      "\n"
+      "Runs the studies S1 (table3), S2-S4 (convergence, validity, thresholds), S5 (timing, quick,\n"
+      "and stress), and S2-S3 on the shipped single-lap shear joint (cases/lap_joint, a scene file),\n"
+      "and writes\n"
+      "  DIR/results.h5           every scene, study table and check, the environment\n"
+      "  DIR/summary.json         every check: id, pass, expected, got, tolerance; and the timings\n"
+      "  DIR/report/index.html    the report, with its figures (made from results.h5 alone:\n"
+      "                           /usr/bin/python3 report/make_report.py DIR/results.h5 DIR/report)\n"
+      "Its options are those of `thinlayer study` that the studies it runs read.");
+  c->formatter(help_formatter("usage: thinlayer verify --out DIR [--repeats N] [--quiet]"));
+  c->set_help_flag("-h,--help", "this help");
+  c->allow_extras();
+  declare_study_options(*c, a, study_options.at("verify"));
+  c->footer(
+      "Exit status: 0 only if every check passes; 1 if one fails; 2 on bad input or a failure to\n"
+      "write an output.");
+  return c;
+}
+
+int command_study(const CLI::App& command, const StudyArgs& a) {
   StudyInput in;
-  std::string name;
+  const std::string name = a.name;
   try {
-    if (argv.empty() || argv[0].rfind("--", 0) == 0)
+    if (name.empty())
       throw std::invalid_argument(
           "which study? (table3, dovetail, convergence, validity, thresholds, asymptotics, timing or stress)");
-    name = argv[0];
-    if (std::find(names.begin(), names.end(), name) == names.end())
-      throw std::invalid_argument("unknown study '" + name +
-                                  "' (expected table3, dovetail, convergence, validity, thresholds, asymptotics, timing or stress)");
     // S2/S3 on the user's own joint (SPEC §5).
-    if (names_scene(argv)) return command_study_scene(name, std::vector<std::string>(argv.begin() + 1, argv.end()));
-    in = parse(std::vector<std::string>(argv.begin() + 1, argv.end()), name);
+    if (given(command, "scene")) return command_study_scene(name, command, a);
+    in = parse(command, a, name);
   } catch (const std::exception& e) {
     if (is_root()) std::cerr << "thinlayer study: " << e.what() << "\n";  // every rank parsed the same
     return 2;
   }
   try {
     const auto start = std::chrono::steady_clock::now();
-    auto out = open_results_on_root(in.out_dir);
+    auto out = open_results_on_root(in.out_dir, {{}, in.force});
     if (in.out_dir.empty()) std::printf("(no --out DIR: the results are printed, not saved)\n");
     std::vector<Check> checks;
     if (name == "table3") checks = run_table3_study(in.table3, out.get());
@@ -340,16 +386,18 @@ int command_study(const std::vector<std::string>& argv) {
   }
 }
 
-int command_verify(const std::vector<std::string>& argv) {
+int command_verify(const CLI::App& command, const StudyArgs& a) {
   StudyInput in;
   try {
-    in = parse(argv, "verify");
+    in = parse(command, a, "verify");
   } catch (const std::exception& e) {
     std::cerr << "thinlayer verify: " << e.what() << "\n";
     return 2;
   }
   try {
-    auto out = open_results(in.out_dir);
+    auto out = open_results(in.out_dir, {{}, in.force});
+    const std::string summary = in.out_dir + "/summary.json";
+    check_replaceable(summary, OutputKind::Summary, {}, in.force);  // before the studies, not after
     std::map<std::string, double> timings;
     std::vector<Check> checks;
     auto timed = [&](const std::string& name, const std::function<std::vector<Check>()>& study) {
@@ -371,7 +419,6 @@ int command_verify(const std::vector<std::string>& argv) {
     timed("lap_joint", [&] { return run_lap_joint_study(in.verbose, out.get()); });
     write_checks(*out, checks);
     out->commit();
-    const std::string summary = in.out_dir + "/summary.json";
     write_text_atomically(summary, summary_json(checks, timings));
     std::cerr << "[verify] report\n";
     const std::string report_dir = in.out_dir + "/report";

@@ -1,11 +1,29 @@
 #pragma once
+// `thinlayer study NAME ...` and `thinlayer verify ...`, their options declared here in CLI11.
 #include <string>
-#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "studies/cli/command_line.h"
 
 namespace thinlayer {
-// `thinlayer study NAME ...` and `thinlayer verify ...`. Return the process exit status.
-int command_study(const std::vector<std::string>& args);
-int command_verify(const std::vector<std::string>& args);
-extern const char* const study_help;
-extern const char* const verify_help;
+
+// The values of the study options as CLI11 converted them (whether each was given: given()).
+struct StudyArgs {
+  std::string name, out, cases, scene;
+  NumberList eps, rate_eps, friction_path;
+  double tolerance = 0;
+  int repeats = 0, relaxation_cap = 0, threads = 0, bisection_steps = 0;
+  long long max_nodes = 0;
+  bool quick = false, quiet = false, force = false;
+};
+
+// Declare the subcommands `study` (with its positional NAME) and `verify` of `thinlayer`.
+CLI::App* declare_study(CLI::App& thinlayer, StudyArgs& args);
+CLI::App* declare_verify(CLI::App& thinlayer, StudyArgs& args);
+
+// Run the parsed command. Return the process exit status.
+int command_study(const CLI::App& command, const StudyArgs& args);
+int command_verify(const CLI::App& command, const StudyArgs& args);
+
 }  // namespace thinlayer

@@ -5,32 +5,65 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "core/io/output_target.h"
+#include "studies/cli/command_line.h"
 #include "studies/cli/command_solve.h"
 #include "studies/cli/command_study.h"
 #include "studies/cli/environment.h"
-#include "studies/parallel/process_group.h"
 #include "studies/cli/results_file.h"
+#include "studies/parallel/process_group.h"
 
 namespace {
 
-const char* const main_help = R"(usage: thinlayer COMMAND [options]
-       thinlayer --version
+// The command line, declared in CLI11 (studies/cli/command_line.h): the commands are its
+// subcommands, each with its options and its help.
+struct Thinlayer {
+  CLI::App app{"", "thinlayer"};
+  thinlayer::SolveArgs solve_args;
+  thinlayer::StudyArgs study_args;
+  CLI::App* solve = nullptr;
+  CLI::App* study = nullptr;
+  CLI::App* verify = nullptr;
 
-Commands:
-  solve      solve one scene (bar or dovetail, limit or layer mode)   (thinlayer solve --help)
-  study      run a study                                              (thinlayer study --help):
-               table3, dovetail, convergence, validity, thresholds, asymptotics, timing, stress
-  verify     run every study, write the summary and the report        (thinlayer verify --help)
+  Thinlayer() {
+    app.formatter(thinlayer::help_formatter("usage: thinlayer COMMAND [options]\n       thinlayer --version"));
+    app.set_help_flag("-h,--help", "this help");
+    solve = thinlayer::declare_solve(app, solve_args);
+    study = thinlayer::declare_study(app, study_args);
+    verify = thinlayer::declare_verify(app, study_args);
+    for (CLI::App* command : {solve, study, verify}) command->group("Commands");
+    app.footer("Each command's options: thinlayer COMMAND --help.\n"
+               "Units: mm and daN (stresses in daN/mm^2 = 10 MPa; lambda_bar, mu_bar in daN/mm^3).");
+  }
 
-Units: mm and daN (stresses in daN/mm^2 = 10 MPa; lambda_bar, mu_bar in daN/mm^3).
-)";
+  std::string main_help() const { return app.help(); }
 
-bool wants_help(const std::vector<std::string>& args) {
-  for (const auto& a : args)
-    if (a == "--help" || a == "-h") return true;
-  return false;
-}
+  // The command called `name`, or null.
+  CLI::App* command_named(const std::string& name) {
+    for (CLI::App* command : {solve, study, verify})
+      if (command->get_name() == name) return command;
+    return nullptr;
+  }
+
+  int run(const std::string& name, const std::vector<std::string>& args) {
+    CLI::App* command = command_named(name);
+    try {
+      thinlayer::parse_command(*command, args);
+    } catch (const CLI::CallForHelp&) {
+      std::fputs(command->help().c_str(), stdout);
+      return 0;
+    } catch (const std::exception& e) {
+      // Under mpirun every rank parsed the same arguments: one says so.
+      if (thinlayer::is_root()) std::cerr << "thinlayer " << name << ": " << e.what() << "\n";
+      return 2;
+    }
+    if (command == solve) return thinlayer::command_solve(*command, solve_args);
+    if (command == study) return thinlayer::command_study(*command, study_args);
+    return thinlayer::command_verify(*command, study_args);
+  }
+};
 
 }  // namespace
 
@@ -47,25 +80,17 @@ int main(int argc, char** argv) {
                 thinlayer::environment_info().at("commit").c_str());
     return 0;
   }
+  Thinlayer thinlayer;
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    std::fputs(main_help, stdout);
+    std::fputs(thinlayer.main_help().c_str(), stdout);
     return args.empty() ? 2 : 0;
   }
   const std::string command = args[0];
   args.erase(args.begin());
+  if (!thinlayer.command_named(command)) {
+    std::cerr << "thinlayer: unknown command '" << command << "' (see thinlayer --help)\n";
+    return 2;
+  }
   if ((command == "solve" || command == "verify") && !thinlayer::refuse_unless_one_process(command)) return 2;
-  if (command == "solve") {
-    if (wants_help(args)) return std::fputs(thinlayer::solve_help, stdout), 0;
-    return thinlayer::command_solve(args);
-  }
-  if (command == "study") {
-    if (wants_help(args)) return std::fputs(thinlayer::study_help, stdout), 0;
-    return thinlayer::command_study(args);
-  }
-  if (command == "verify") {
-    if (wants_help(args)) return std::fputs(thinlayer::verify_help, stdout), 0;
-    return thinlayer::command_verify(args);
-  }
-  std::cerr << "thinlayer: unknown command '" << command << "' (see thinlayer --help)\n";
-  return 2;
+  return thinlayer.run(command, args);
 }

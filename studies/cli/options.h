@@ -3,32 +3,37 @@
 #include <set>
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "cases/bar/bar.h"
 #include "core/solvers/solve_report.h"
-#include "studies/cli/args.h"
+#include "core/solvers/solver_choice.h"
+#include "studies/cli/command_solve.h"
 
 namespace thinlayer {
 
-#define MESH_AND_SOLVER_HELP \
-  "  --nx N, --ny N       elements along AD and DE (default 32 x 32)\n" \
-  "  --element E          Q1 (default) | P1\n" \
-  "  --diagonal D         P1 only: right (default, '/') | left ('\\')\n" \
-  "  --plane P            strain (default) | stress\n" \
-  "  --distortion D       bar: move interior nodes by up to D x the element size, 0 <= D < 0.5\n" \
-  "                       (a reproducible pseudo-random pattern; stress tests)\n" \
-  "  --load-scale S       bar: multiply the tractions F1, F2 by S (-1 lifts the bar off AD)\n" \
-  "  --tolerance T        SPEC residual to reach (default 1e-10)\n" \
-  "  --max-iterations N   solver iteration cap, N >= 1 (default: fast 200; with a floating layer\n" \
-  "                       none, its spring stages bound the work; relaxation 100000 sweeps)\n" \
-  "  --omega W            relaxation's over-relaxation coefficient in (0, 2) (default 1.8)\n"
+// Declares --nx, --ny, --element, --diagonal, --plane, --distortion, --load-scale (group
+// "Bar") and --tolerance, --max-iterations, --omega (group "Solvers") on `command`.
+void declare_bar_mesh_options(CLI::App& command, SolveArgs& args);
+void declare_solver_options(CLI::App& command, SolveArgs& args);
 
-inline const std::set<std::string> mesh_and_solver_options = {"nx", "ny", "element", "diagonal", "plane", "distortion", "load-scale",
-                                                              "tolerance", "max-iterations", "omega"};
+inline const std::set<std::string> bar_mesh_options = {"nx", "ny", "element", "diagonal", "plane", "distortion", "load-scale"};
+inline const std::set<std::string> solver_options = {"tolerance", "max-iterations", "omega"};
 
-bar::MeshOptions parse_bar_mesh(const Args& args);
-SolverOptions parse_solver_options(const Args& args);
+// What every solve reads besides its scene: the solver, where the results go, how they print.
+struct SolveRun {
+  SolverKind solver = SolverKind::Fast;
+  SolverOptions options;
+  std::string out, vtu;
+  bool json = false, force = false;
+};
+// --solver, the solver options, --verbose, --out, --vtu (not the same file), --json, --force.
+void parse_solve_run(const CLI::App& command, const SolveArgs& args, SolveRun& run);
+
+bar::MeshOptions parse_bar_mesh(const CLI::App& command, const SolveArgs& args);
+SolverOptions parse_solver_options(const CLI::App& command, const SolveArgs& args);
 // --friction-path "F1,F2,...": Coulomb coefficients (finite, >= 0) -> their multiples of the
 // scene's f, as SolverOptions::friction_path takes them. The scene's f must be > 0.
-std::vector<double> friction_path_multipliers(const std::string& text, double friction);
+std::vector<double> friction_path_multipliers(const std::vector<double>& path, double friction);
 
 }  // namespace thinlayer

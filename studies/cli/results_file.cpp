@@ -3,12 +3,15 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <unistd.h>
+
 #include "core/io/output_target.h"
 #include "studies/cli/environment.h"
 
 namespace thinlayer {
 
-std::unique_ptr<H5Writer> open_results_file(const std::string& file) {
+std::unique_ptr<H5Writer> open_results_file(const std::string& file, const OutputRules& rules) {
+  check_replaceable(file, OutputKind::Results, rules.inputs, rules.force);
   auto out = std::make_unique<H5Writer>(file);
   out->attr("/", "layout", std::string(results_layout));
   out->attr("/", "layout_version", results_layout_version);
@@ -16,12 +19,30 @@ std::unique_ptr<H5Writer> open_results_file(const std::string& file) {
   return out;
 }
 
-std::unique_ptr<H5Writer> open_results(const std::string& dir) {
+std::unique_ptr<H5Writer> open_results(const std::string& dir, const OutputRules& rules) {
   if (dir.empty()) return nullptr;
+  std::vector<std::string> made;  // deepest first
+  for (std::filesystem::path p = std::filesystem::absolute(dir); !p.empty() && !std::filesystem::exists(p);
+       p = p.parent_path())
+    made.push_back(p.string());
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw OutputError("cannot create output directory '" + dir + "': " + ec.message());
-  return open_results_file(dir + "/results.h5");
+  try {
+    auto out = open_results_file(dir + "/results.h5", rules);
+    out->remove_if_abandoned(made);
+    return out;
+  } catch (...) {
+    for (const std::string& folder : made) ::rmdir(folder.c_str());
+    throw;
+  }
+}
+
+void write_scene_file(const std::string& file, const SceneRecord& record, const OutputRules& rules) {
+  auto out = open_results_file(file, rules);
+  write_scene(*out, record);
+  write_checks(*out, {});
+  out->commit();
 }
 
 void write_checks(H5Writer& out, const std::vector<Check>& checks) {

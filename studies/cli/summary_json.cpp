@@ -1,8 +1,12 @@
 #include "studies/cli/summary_json.h"
 
+#include "core/io/output_ownership.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+
+#include "core/io/output_ownership.h"
 
 namespace thinlayer {
 
@@ -43,7 +47,7 @@ std::string summary_json(const std::vector<Check>& checks, const std::map<std::s
   std::ostringstream j;
   int failed = 0;
   for (const Check& c : checks) failed += !c.pass;
-  j << "{\n  \"pass\": " << (failed == 0 ? "true" : "false") << ",\n  \"failed\": " << failed << ",\n  \"checks\": [\n";
+  j << "{\n  \"layout\": " << quoted(summary_layout_name) << ",\n  \"pass\": " << (failed == 0 ? "true" : "false") << ",\n  \"failed\": " << failed << ",\n  \"checks\": [\n";
   for (size_t i = 0; i < checks.size(); ++i) {
     const Check& c = checks[i];
     j << "    {\"id\": " << quoted(c.id) << ", \"pass\": " << (c.pass ? "true" : "false")

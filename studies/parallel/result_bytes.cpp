@@ -2,17 +2,6 @@
 
 namespace thinlayer {
 
-void put(ByteWriter& w, const std::string& s) {
-  put(w, static_cast<std::uint64_t>(s.size()));
-  w.raw(s.data(), s.size());
-}
-void get(ByteReader& r, std::string& s) {
-  std::uint64_t n = 0;
-  get(r, n);
-  s.resize(n);
-  r.raw(s.data(), n);
-}
-
 void put(ByteWriter& w, const StatusCount& c) { put(w, c.gap), put(w, c.slide), put(w, c.stick); }
 void get(ByteReader& r, StatusCount& c) { get(r, c.gap), get(r, c.slide), get(r, c.stick); }
 

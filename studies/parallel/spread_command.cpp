@@ -19,10 +19,10 @@ void on_root(const std::function<void()>& run) {
   if (broadcast_from_root(error.empty() ? 0 : 1)) throw ErrorOnEveryRank(error);
 }
 
-std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir) {
+std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir, const OutputRules& rules) {
   std::unique_ptr<H5Writer> out;
   on_root([&] {
-    out = open_results(dir);
+    out = open_results(dir, rules);
     if (out) out->attr("/", "ranks", rank_count());
   });
   return out;

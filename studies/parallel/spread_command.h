@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/io/h5_writer.h"
+#include "studies/cli/results_file.h"
 #include "studies/drivers/table3_study.h"
 
 namespace thinlayer {
@@ -21,7 +22,7 @@ void on_root(const std::function<void()>& run);
 
 // open_results(dir) on rank 0 (through on_root), with the root attribute `ranks` (K, 1 for one
 // process); null on the other ranks (and for an empty dir).
-std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir);
+std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir, const OutputRules& rules = {});
 
 // A study that is not spread (the timing study measures time; see README for the others):
 // rank 0 runs it while the other ranks wait, idle, and return no checks. `why` ends the

@@ -1,0 +1,179 @@
+#include "cases/scene/mesh_estimate.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace thinlayer {
+
+namespace {
+
+// Nodes per h² of area (see the header; calibrated on the lap joint and the scene tests' strips).
+double nodes_per_area(ElementType element) { return element == ElementType::Q1 ? 2.5 : 1.2; }
+
+// The size growth of scene_mesh.cpp's threshold field (mm per mm from the bondline).
+constexpr double size_growth_rate = 0.2;
+
+std::vector<int> entities(int dim, const std::string& name) {
+  std::vector<int> tags;
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, dim);
+  for (const auto& [d, tag] : groups) {
+    std::string n;
+    gmsh::model::getPhysicalName(d, tag, n);
+    if (n != name) continue;
+    std::vector<int> e;
+    gmsh::model::getEntitiesForPhysicalGroup(d, tag, e);
+    tags.insert(tags.end(), e.begin(), e.end());
+  }
+  return tags;
+}
+
+// 64 points along the curve (|tag|), reversed for a negative tag.
+std::vector<std::array<double, 2>> samples(int tag) {
+  std::vector<double> lo, hi, xyz;
+  gmsh::model::getParametrizationBounds(1, std::abs(tag), lo, hi);
+  std::vector<double> t;
+  for (int k = 0; k <= 64; ++k) t.push_back(lo.at(0) + (hi.at(0) - lo.at(0)) * k / 64.0);
+  gmsh::model::getValue(1, std::abs(tag), t, xyz);
+  std::vector<std::array<double, 2>> p;
+  for (std::size_t k = 0; k + 2 < xyz.size(); k += 3) p.push_back({xyz[k], xyz[k + 1]});
+  if (tag < 0) std::reverse(p.begin(), p.end());
+  return p;
+}
+
+double length(int tag) {
+  const auto p = samples(tag);
+  double l = 0;
+  for (std::size_t k = 1; k < p.size(); ++k) l += std::hypot(p[k][0] - p[k - 1][0], p[k][1] - p[k - 1][1]);
+  return l;
+}
+
+// The oriented boundary curves of a body's surfaces.
+std::vector<int> boundary(const std::vector<int>& surfaces) {
+  std::vector<int> curves;
+  for (int s : surfaces) {
+    gmsh::vectorpair out;
+    gmsh::model::getBoundary({{2, s}}, out, /*combined=*/false, /*oriented=*/true, /*recursive=*/false);
+    for (const auto& [dim, tag] : out)
+      if (dim == 1) curves.push_back(tag);
+  }
+  return curves;
+}
+
+// The area the oriented boundary encloses (holes, oriented the other way, count negative).
+double area(const std::vector<int>& surfaces) {
+  double twice = 0;
+  for (int s : surfaces) {
+    double surface = 0;
+    gmsh::vectorpair out;
+    gmsh::model::getBoundary({{2, s}}, out, false, true, false);
+    for (const auto& [dim, tag] : out) {
+      const auto p = samples(tag);
+      for (std::size_t k = 1; k < p.size(); ++k) surface += p[k - 1][0] * p[k][1] - p[k][0] * p[k - 1][1];
+    }
+    twice += std::abs(surface);
+  }
+  return twice / 2;
+}
+
+double option(const std::string& name) {
+  double v = 0;
+  gmsh::option::getNumber(name, v);
+  return v;
+}
+
+// The .geo's own clipping of every size.
+double clipped(double h) {
+  return std::clamp(h * option("Mesh.MeshSizeFactor"), option("Mesh.MeshSizeMin"), option("Mesh.MeshSizeMax"));
+}
+
+// ∫ dA / h² over a body of area `a` with `l` mm of bondline on its boundary: a band along the
+// bondline where h grows from h_i to h_f, and h_f beyond.
+double inverse_square_size_integral(double a, double l, double h_i, double h_f) {
+  if (l <= 0) return a / (h_f * h_f);
+  const double reach = std::max((h_f - h_i) / size_growth_rate, h_f);  // scene_mesh.cpp's DistMax
+  const double depth = std::min(reach, a / l);
+  const double k = (h_f - h_i) / reach;
+  const double band = k > 0 ? l / k * (1 / h_i - 1 / (h_i + k * depth)) : l * depth / (h_i * h_i);
+  return band + std::max(0.0, a - l * depth) / (h_f * h_f);
+}
+
+double estimate_from_mesh_size(const SceneSpec& spec) {
+  std::set<int> on_bondline;
+  for (const SceneInterfaceSpec& i : spec.interfaces)
+    for (int c : entities(1, i.group)) on_bondline.insert(c);
+  const double h_i = clipped(*spec.h_interface), h_f = std::max(h_i, clipped(*spec.h_far));
+  double nodes = 0;
+  for (const SceneBodySpec& b : spec.bodies) {
+    const std::vector<int> surfaces = entities(2, b.group);
+    double l = 0;
+    for (int c : boundary(surfaces))
+      if (on_bondline.count(std::abs(c))) l += length(c);
+    nodes += inverse_square_size_integral(area(surfaces), l, h_i, h_f);
+  }
+  return nodes_per_area(spec.element) * nodes;
+}
+
+// The .geo's own sizes: mesh the curves (the size floored so that this stays bounded), take
+// each body's mean boundary segment, clear the curve mesh.
+double estimate_from_curve_mesh(const SceneSpec& spec) {
+  std::map<std::string, std::vector<int>> curves;
+  double total_length = 0;
+  for (const SceneBodySpec& b : spec.bodies) {
+    curves[b.name] = boundary(entities(2, b.group));
+    for (int c : curves[b.name]) total_length += length(c);
+  }
+  const double previous_min = option("Mesh.MeshSizeMin");
+  gmsh::option::setNumber("Mesh.MeshSizeMin", std::max(previous_min, total_length / static_cast<double>(spec.max_nodes)));
+  gmsh::model::mesh::generate(1);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", previous_min);
+  double nodes = 0;
+  for (const SceneBodySpec& b : spec.bodies) {
+    double perimeter = 0, segments = 0;
+    for (int c : curves[b.name]) {
+      std::vector<std::size_t> tags;
+      std::vector<double> xyz, u;
+      gmsh::model::mesh::getNodes(tags, xyz, u, 1, std::abs(c), /*includeBoundary=*/true, false);
+      segments += std::max<double>(1, static_cast<double>(tags.size()) - 1);
+      perimeter += length(c);
+    }
+    const double h = perimeter / std::max(segments, 1.0);
+    nodes += nodes_per_area(spec.element) * area(entities(2, b.group)) / (h * h) + segments;
+  }
+  gmsh::model::mesh::clear();
+  return nodes;
+}
+
+double node_count_of_msh() {
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz, u;
+  gmsh::model::mesh::getNodes(tags, xyz, u, -1, -1, false, false);
+  return static_cast<double>(tags.size());
+}
+
+}  // namespace
+
+double estimated_mesh_nodes(const SceneSpec& spec) {
+  if (spec.geometry.empty()) return node_count_of_msh();
+  return spec.h_interface ? estimate_from_mesh_size(spec) : estimate_from_curve_mesh(spec);
+}
+
+void refuse_oversized_mesh(const SceneSpec& spec) {
+  const double nodes = estimated_mesh_nodes(spec);
+  if (!(nodes <= static_cast<double>(spec.max_nodes))) {
+    std::ostringstream s;
+    s.precision(2);
+    s << spec.geometry_where << ": the mesh would have about " << nodes << " nodes, above the limit of "
+      << spec.max_nodes << " (--max-nodes): "
+      << (spec.geometry.empty() ? "give a coarser mesh" : spec.h_interface ? "raise mesh_size" : "raise the .geo's sizes")
+      << " or the limit";
+    throw InputError(s.str());
+  }
+}
+
+}  // namespace thinlayer

@@ -1,0 +1,16 @@
+#include "core/io/bytes.h"
+
+namespace thinlayer {
+
+void put(ByteWriter& w, const std::string& s) {
+  put(w, static_cast<std::uint64_t>(s.size()));
+  w.raw(s.data(), s.size());
+}
+void get(ByteReader& r, std::string& s) {
+  std::uint64_t n = 0;
+  get(r, n);
+  s.resize(n);
+  r.raw(s.data(), n);
+}
+
+}  // namespace thinlayer

@@ -1,0 +1,89 @@
+#include "core/io/output_ownership.h"
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+#include <sys/stat.h>
+
+#include "core/io/h5_reader.h"
+#include "core/io/output_target.h"
+
+namespace thinlayer {
+
+namespace {
+
+// The first `n` bytes of a file.
+std::string head(const std::string& path, std::size_t n) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text(n, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(n));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
+}
+
+bool is_results_file(const std::string& path) {
+  try {
+    const H5Reader file(path);
+    return file.attr_string("/", "layout") == results_layout_name;
+  } catch (const std::exception&) {  // not HDF5, or no layout: another tool's
+    return false;
+  }
+}
+
+bool is_summary(const std::string& path) {
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) return false;
+  if (j.contains("layout")) return j["layout"] == summary_layout_name;
+  return j.contains("checks") && j["checks"].is_array() && j.contains("timings") && j["timings"].is_object();
+}
+
+bool is_own(const std::string& path, OutputKind kind) {
+  switch (kind) {
+    case OutputKind::Results:
+      return is_results_file(path);
+    case OutputKind::Vtu: {
+      const std::string top = head(path, 256);
+      const std::size_t line = top.find('\n');
+      return line != std::string::npos && top.compare(line + 1, std::string(vtu_marker).size(), vtu_marker) == 0;
+    }
+    case OutputKind::Csv:
+      return head(path, std::string(csv_marker).size()) == csv_marker;
+    case OutputKind::Summary:
+      return is_summary(path);
+  }
+  return false;
+}
+
+const char* kind_name(OutputKind kind) {
+  switch (kind) {
+    case OutputKind::Results:
+      return "a thinlayer results file";
+    case OutputKind::Vtu:
+      return "a VTU file thinlayer wrote";
+    case OutputKind::Csv:
+      return "a CSV file thinlayer wrote";
+    case OutputKind::Summary:
+      return "a summary.json thinlayer wrote";
+  }
+  return "";
+}
+
+}  // namespace
+
+void check_replaceable(const std::string& path, OutputKind kind, const std::vector<InputFile>& inputs, bool force) {
+  const std::string target = resolve_output_target(path);
+  struct stat out {};
+  if (::stat(target.c_str(), &out) != 0) return;  // nothing there to lose
+  for (const InputFile& input : inputs) {
+    struct stat in {};
+    if (::stat(input.path.c_str(), &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino)
+      throw OutputError("cannot write '" + path + "': it is " + input.what + " (" + input.path +
+                        "), an input of this run; choose another name");
+  }
+  if (!force && !is_own(target, kind))
+    throw OutputError("cannot write '" + path + "': it exists and is not " + kind_name(kind) +
+                      " (give --force to replace it)");
+}
+
+}  // namespace thinlayer

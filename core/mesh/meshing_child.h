@@ -1,0 +1,50 @@
+#pragma once
+// gmsh run on a user's file, in a child process that can neither run a program nor write a
+// file, and whose failures are the parent's error messages, not its crash (SPEC §4).
+//
+// Why a child: gmsh reads a user's .geo as a program, and fails in ways a caller cannot catch.
+// Some of its errors are thrown inside its OpenMP regions, where an exception ends the process
+// (std::terminate, exit 134: a mesh size of 1e-9, a .geo ending in "Mesh 2;"); some meshing
+// algorithms crash outright (Mesh.Algorithm = 8 in Debian's gmsh 4.8, exit 139); a loop in a
+// .geo can run for ever. In a child each of these ends the child, and the parent says what
+// happened in one line. The .geo scan (cases/scene/geo_scan.h) refuses what a script could do
+// before gmsh runs; the child's sandbox is the second line: should a statement slip past the
+// scan, it still cannot run a program or create, change or remove a file.
+//
+// The child (fork of this process, so it needs no new program and shares the parent's gmsh
+// state as it was):
+//   - has stdin, stdout and stderr on /dev/null (gmsh's own printing never reaches the user's
+//     terminal or the JSON line of `solve --json`) and no other file descriptor but its pipe;
+//   - cannot run a program, start a process, open a file for writing, create, remove, rename
+//     or link one, change its mode or owner, open a socket or signal another process (a
+//     seccomp filter, libseccomp: those system calls fail with EPERM);
+//   - has at most `memory_limit_bytes` of address space, `cpu_limit_s` of CPU time and no
+//     core dump;
+//   - dies with its parent (PR_SET_PDEATHSIG), and with a SIGINT or SIGTERM of the parent
+//     (forwarded by core/io/output_target.h's handler).
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace thinlayer {
+
+// A failure of the work done in the child, as one line (no file named: the caller knows it).
+// `input` is true when the work threw an error about its input (InputError or
+// std::invalid_argument), false for anything else (gmsh's own errors, a crash, a limit).
+struct MeshingChildError : std::runtime_error {
+  MeshingChildError(const std::string& what, bool input) : std::runtime_error(what), input(input) {}
+  bool input;
+};
+
+struct MeshingChildLimits {
+  long long memory_limit_bytes = 8LL << 30;  // 8 GiB: a 2e6-node mesh takes about 2 GiB in gmsh
+  long long cpu_limit_s = 600;
+};
+
+// Runs `work` in the child and returns the bytes it returns. Throws MeshingChildError with
+// `work`'s exception message, or saying how the child ended (a signal, a limit, an exit
+// without an answer). The gmsh lock (gmsh_session.h) is held across the fork, so no other
+// thread of this process is inside gmsh then; `work` itself must not take it.
+std::string run_in_meshing_child(const std::function<std::string()>& work, const MeshingChildLimits& limits = {});
+
+}  // namespace thinlayer
