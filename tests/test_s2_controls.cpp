@@ -36,8 +36,10 @@ TEST(SelectionControl, TheTwoSelectionsAgreeAndTheCheckSaysSo) {
   ASSERT_EQ(checks.size(), 1u);
   EXPECT_EQ(checks[0].id, "convergence.f.selections_agree");
   EXPECT_TRUE(checks[0].pass) << checks[0].got;
-  // Asking the selections to agree to nothing at all fails the check: it can fail.
-  options.agreement = 0;
+  // Asking the selections for the impossible fails the check: it can fail. (Both selections now
+  // end on the same statuses, whose answer is solved exactly without the spring: their spread is
+  // exactly 0 here, so an agreement of 0 is met.)
+  options.agreement = -1;
   std::vector<Check> strict;
   run_selection_control(options, cache, nullptr, strict);
   EXPECT_FALSE(strict.at(0).pass);

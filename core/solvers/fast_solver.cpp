@@ -110,9 +110,11 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   // The statuses' own answer, solved exactly (core/solvers/mixed_system.h): one sparse LU of the
   // whole problem, without the condensation's round-off and without a floating layer's selection
   // spring (whose pull is part of the iterate's error). Taken where its residual is the smaller.
-  // A supported problem that converged does not need it.
+  // A supported problem that converged does not need it; a solve whose cap ran out does not get it
+  // (a cap bounds the linear solves).
   bool exact = false;
-  if (nw > 0 || !(report.residual.value() <= options.tolerance)) {
+  const bool cap_spent = nw == 0 ? report.iterations >= max_iterations : capped;
+  if (!cap_spent && (nw > 0 || !(report.residual.value() <= options.tolerance))) {
     MixedSystem mixed(problem);
     const MixedSystem::Answer answer = mixed.solve(statuses);
     if (!answer.singular && answer.u.allFinite() && answer.r.allFinite()) {

@@ -45,14 +45,14 @@ void put(ByteWriter& w, const SceneRecord& s) {
   put(w, s.id), put(w, s.text), put(w, s.numbers), put(w, s.integers), put(w, s.nodes), put(w, s.cells);
   put(w, s.u), put(w, s.body_names), put(w, s.cell_body), put(w, s.cell_stress), put(w, s.interfaces);
   put(w, s.reactions), put(w, s.combined_status), put(w, s.residual_per_body), put(w, s.residual_per_interface);
-  put(w, s.residual_floor_per_body), put(w, s.residual_nodal_floor_per_body);
+  put(w, s.residual_floor_per_body), put(w, s.residual_nodal_floor_per_body), put(w, s.residual_floor_per_interface);
   put(w, s.interface_names);
 }
 void get(ByteReader& r, SceneRecord& s) {
   get(r, s.id), get(r, s.text), get(r, s.numbers), get(r, s.integers), get(r, s.nodes), get(r, s.cells);
   get(r, s.u), get(r, s.body_names), get(r, s.cell_body), get(r, s.cell_stress), get(r, s.interfaces);
   get(r, s.reactions), get(r, s.combined_status), get(r, s.residual_per_body), get(r, s.residual_per_interface);
-  get(r, s.residual_floor_per_body), get(r, s.residual_nodal_floor_per_body);
+  get(r, s.residual_floor_per_body), get(r, s.residual_nodal_floor_per_body), get(r, s.residual_floor_per_interface);
   get(r, s.interface_names);
 }
 
