@@ -1,5 +1,6 @@
 #include "cases/layer_scene.h"
 
+#include "cases/film_admissibility.h"
 #include "cases/layer_quadrature.h"
 
 namespace thinlayer {
@@ -24,6 +25,7 @@ LayerCounts finish_layer_record(SceneRecord& r, const Material& layer, int layer
   const InterfaceFields& plus = r.interfaces.at(0);
   const InterfaceFields& minus = r.interfaces.at(1);
   r.combined_status = combined_statuses(plus, minus);
+  record_film_admissibility(r);
   std::vector<NodeStatus> combined;
   for (int v : r.combined_status) combined.push_back(static_cast<NodeStatus>(v));
   return {plus.counts(), minus.counts(), count_statuses(combined)};

@@ -34,6 +34,7 @@ import section_bar_profiles  # noqa: E402
 import section_controls  # noqa: E402
 import section_convergence  # noqa: E402
 import section_convergence_rates  # noqa: E402
+import section_film  # noqa: E402
 import section_header  # noqa: E402
 import section_joint  # noqa: E402
 import section_layer_stiffness  # noqa: E402
@@ -71,6 +72,7 @@ SECTIONS = (
     ("validity", "Validity", section_validity.render),
     ("timing", "Run time", section_timing.render),
     ("stress", "Stress tests", section_stress.render),
+    ("film", "Film", section_film.render),
     ("scenes", "Your own joint", section_scene_files.render),
 )
 
@@ -83,6 +85,7 @@ IN_HELPER = {"convergence"}
 JOINT_SECTIONS = (
     ("summary", "Summary", section_header.render),
     ("joint", "The joint", section_joint.render),
+    ("film", "Film", section_film.render),
 )
 
 

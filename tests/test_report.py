@@ -65,8 +65,11 @@ def write_bar_layer_scene(f, row, eps):
     """A bar layer scene: S+ (32 nodes) and S- (33 nodes), with the combined status."""
     sid = f"bar-table3-row-{row}-Q1-32x32-plane_strain-fast-layer-eps{eps:g}"
     g = f.create_group(f"scenes/{sid}")
+    # Film admissibility (SPEC 1.5): the thinnest of these layers slid 56 elements (the bar's row 5
+    # film at 1e-4 slides 70 mm), the others stayed put.
     scene_attrs(g, mode="layer", law_case=f"table3-row-{row}", eps=eps, lambda_eps=eps * 4.5e8,
-                mu_eps=eps * 5.4e8, layer_elements=2)
+                mu_eps=eps * 5.4e8, layer_elements=2, film_slip_over_h=55.8 if eps < 1e-3 else 0.01,
+                film_strain_max=200.0 if eps < 1e-3 else 1e-5)
     status = np.array([0] * 3 + [1] * 14 + [2] * 15)
     for face, m, y in (("S+", 32, 0.0), ("S-", 33, -eps)):
         x = np.stack([np.arange(m) * 1.25, np.full(m, y)], axis=1)
@@ -101,7 +104,7 @@ def write_dovetail_scenes(f, case, gamma, delta, lambda_bar, mu_bar, eps_values)
         g = f.create_group(f"scenes/{sid}")
         scene_attrs(g, case="dovetail", mode="layer", law_case=case, eps=eps, gamma=gamma, delta=delta,
                     lambda_bar=lambda_bar, mu_bar=mu_bar, friction=0.5, lambda_eps=eps * lambda_bar,
-                    mu_eps=eps * mu_bar, layer_elements=1)
+                    mu_eps=eps * mu_bar, layer_elements=1, film_slip_over_h=0.0, film_strain_max=0.0)
         # Nodes: base and layer bottom at y = 0, layer top and tenon at y = eps (coincident pairs).
         bottom, top = np.stack([xs, np.zeros(m)], 1), np.stack([xs, np.full(m, eps)], 1)
         nodes = np.concatenate([bottom, bottom, top, top])
@@ -433,6 +436,11 @@ class ReportTest(unittest.TestCase):
         self.assertIn("-0.30 ± 0.01", controls)  # selective integration's rate of σ_N away
         self.assertIn("1.0e-12 / 3.0e-04", controls)
         self.assertIn("2.5e-05 / 3.0e-04", controls)
+        # Film admissibility: the scenes that slid more than an element are listed, the others not.
+        film = html[html.index('id="film"'):html.index('id="scenes"')]
+        self.assertRegex(film, r"\d+ of \d+ layer scenes stray outside the assumptions")
+        self.assertIn("55.8", film)
+        self.assertNotIn("dovetail-layer-", film)
         self.assertNothingLeftBehind()
 
     def test_without_layout_attributes_the_file_is_called_foreign(self):

@@ -1,5 +1,7 @@
 #include "cases/scene/scene_file_scenes.h"
 
+#include "cases/film_admissibility.h"
+
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -235,6 +237,7 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   scene.loads = applied_load_resultants(layer.model);
   scene.carries_load = !all_open(scene.bondlines);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
+  record_film_admissibility(r);
   return scene;
 }
 

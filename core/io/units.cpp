@@ -57,6 +57,8 @@ std::string unit_of(const std::string& name) {
       {"residual_per_interface", "1 (relative)"},
       {"residual_floor_per_body", "1 (relative)"},
       {"residual_floor_per_interface", "1 (relative)"},
+      {"film_slip_over_h", "1 (elements along S)"},
+      {"film_strain_max", "1 (strain)"},
       {"residual_nodal_floor_per_body", "1 (relative)"},
   };
   auto it = units.find(name);

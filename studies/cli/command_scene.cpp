@@ -1,5 +1,7 @@
 #include "studies/cli/command_scene.h"
 
+#include "cases/film_admissibility.h"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -103,6 +105,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
     if (in.json) std::printf("%s\n", scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu).c_str());
     if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = film_warning(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!s.report.converged) {
       std::cerr << "thinlayer solve: " << s.report.message << "\n";
       return 1;

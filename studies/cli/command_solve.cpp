@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cases/film_admissibility.h"
+
 #include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 #include "core/io/reference_tables.h"
@@ -175,6 +177,12 @@ void print_report(const SolveReport& report, const SceneRecord& record) {
   say("\n");
 }
 
+// SPEC §1.5, film admissibility: how far the layer slid and how much it strained.
+void print_film(const SceneRecord& record) {
+  say("  film: largest slip %.3g elements along S, largest strain %.3g\n", record.numbers.at("film_slip_over_h"),
+      record.numbers.at("film_strain_max"));
+}
+
 void print_layer(const MeshQuality& q, double eps, const LayerCounts& c) {
   say("  layer mesh: %d Q1 cells, angles %.1f..%.1f deg, aspect ratio up to %.3g (eps %g), "
       "scaled Jacobian >= %.3f\n", q.cells, q.min_angle_deg, q.max_angle_deg, q.max_aspect_ratio, eps,
@@ -200,6 +208,7 @@ std::pair<SceneRecord, SolveReport> solve_scene(const SolveInput& in) {
     BarLayerScene s = solve_bar_layer(in.bar_mesh, in.law.lambda_bar, in.law.mu_bar, in.eps, in.law_case, in.solver,
                                       in.options, default_status_tolerance, in.layer_elements);
     print_layer(s.layer_quality, in.eps, s.counts);
+    print_film(s.record);
     print_report(s.report, s.record);
     return {std::move(s.record), std::move(s.report)};
   }
@@ -220,6 +229,7 @@ std::pair<SceneRecord, SolveReport> solve_scene(const SolveInput& in) {
   }
   DovetailScene s = solve_dovetail_layer(bulk, in.exponents, in.eps, in.law_case, in.solver, in.options);
   print_layer(s.layer_quality, in.eps, s.counts);
+  print_film(s.record);
   print_report(s.report, s.record);
   return {std::move(s.record), std::move(s.report)};
 }
@@ -236,7 +246,7 @@ std::string summary_line(const SolveInput& in, const SceneRecord& record, const 
     counts["combined"] = counts_json(count_statuses(combined));
   }
   const double setup = record.numbers.at("setup_time_s");
-  const nlohmann::json j = {
+  nlohmann::json j = {
       {"scene", record.id},
       {"case", in.case_name},
       {"mode", in.mode},
@@ -253,6 +263,9 @@ std::string summary_line(const SolveInput& in, const SceneRecord& record, const 
       {"out", in.out.empty() ? nullptr : nlohmann::json(in.out)},
       {"vtu", in.vtu.empty() ? nullptr : nlohmann::json(in.vtu)},
   };
+  if (record.numbers.count("film_slip_over_h"))  // SPEC §1.5: a layer scene's film admissibility
+    j["film"] = {{"slip_over_h", record.numbers.at("film_slip_over_h")},
+                 {"strain_max", record.numbers.at("film_strain_max")}};
   return j.dump();
 }
 
@@ -381,6 +394,7 @@ int command_solve(const CLI::App& command, const SolveArgs& args) {
       say("  wrote %s\n", in.vtu.c_str());
     }
     if (in.json) std::printf("%s\n", summary_line(in, record, report).c_str());
+    if (const std::string w = film_warning(record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!report.converged) {
       std::cerr << "thinlayer solve: " << report.message << "\n";
       return 1;

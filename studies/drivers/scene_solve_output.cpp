@@ -56,6 +56,8 @@ void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, doubl
     print_counts("S+", s.counts.plus_face);
     print_counts("S-", s.counts.minus_face);
     print_counts("combined", s.counts.combined);
+    std::printf("  film: largest slip %.3g elements along S, largest strain %.3g\n",
+                s.record.numbers.at("film_slip_over_h"), s.record.numbers.at("film_strain_max"));
   }
   const SolveReport& r = s.report;
   const std::string outcome = r.converged ? "converged" : std::string("NOT converged (") + to_string(r.stop_cause) + ")";
@@ -95,7 +97,7 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
   nlohmann::json reactions = nlohmann::json::object(), loads = nlohmann::json::object();
   for (const auto& [name, R] : record.reactions) reactions[name] = vector_json(R);
   for (const auto& [name, F] : s.loads) loads[name] = vector_json(F);
-  const nlohmann::json j = {
+  nlohmann::json j = {
       {"scene", record.id},
       {"case", record.text.at("case")},
       {"scene_file", scene_file},
@@ -118,6 +120,9 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
       {"out", out.empty() ? nullptr : nlohmann::json(out)},
       {"vtu", vtu.empty() ? nullptr : nlohmann::json(vtu)},
   };
+  if (record.numbers.count("film_slip_over_h"))  // SPEC §1.5: a layer scene's film admissibility
+    j["film"] = {{"slip_over_h", record.numbers.at("film_slip_over_h")},
+                 {"strain_max", record.numbers.at("film_strain_max")}};
   return j.dump();
 }
 
