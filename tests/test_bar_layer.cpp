@@ -28,6 +28,22 @@ TEST(BarLayer, ThinLayerReproducesTheLimitCounts) {
   }
 }
 
+// Issue 26, item 7: the documented thickest layer (bar::thickest_layer, 1 mm) works on every row,
+// with 2 and 4 elements through it. Before the selection spring was floored against the layer's
+// own stiffness, rows 1, 2 and 4 ended "not positive definite" from 1 mm up.
+TEST(BarLayer, EveryRowConvergesAtTheThickestDocumentedLayer) {
+  const auto paper = load_table3_paper();
+  for (int row : {1, 2, 3, 4, 5, 6})
+    for (int across : {2, 4}) {
+      SCOPED_TRACE("row " + std::to_string(row) + ", " + std::to_string(across) + " across");
+      const BarLayerScene s =
+          solve_bar_layer(bar::MeshOptions{}, paper[row - 1].lambda_bar, paper[row - 1].mu_bar, bar::thickest_layer,
+                          "table3-row-" + std::to_string(row), SolverKind::Fast, SolverOptions{},
+                          default_status_tolerance, across);
+      EXPECT_TRUE(s.report.converged) << s.report.message << ", residual " << s.report.residual.value();
+    }
+}
+
 TEST(BarLayer, LayerModeRejectsBadThickness) {
   for (double eps : {0.0, -1e-3, std::nan("")})
     EXPECT_THROW(solve_bar_layer(bar::MeshOptions{}, 450, 540, eps, "x", SolverKind::Fast, SolverOptions{}),

@@ -12,6 +12,12 @@
 namespace thinlayer::bar {
 
 constexpr double side = 40.0;        // L, mm
+// The thickest layer the bar's layer mode accepts (mm): a fortieth of its side, not the tenth that
+// makes a layer thin. Table 3's rows give the layer λ̄ up to 4.5e8 against μ̄ down to 0.054
+// (daN/mm²), so a thick layer is nearly incompressible (λ_ε/μ_ε up to 1e10): measured with 2 and 4
+// elements through it, every row converges at 1 mm (residual <= 1.4e-11), while at 3-4 mm row 2 is
+// singular and row 4 stops at its round-off floor (1.8e-10) or adrift (issue 26, item 7).
+constexpr double thickest_layer = 1.0;
 constexpr double lambda_m = 4500.0;  // daN/mm² (45 GPa)
 constexpr double mu_m = 5400.0;      // daN/mm² (54 GPa)
 constexpr double F1 = 10.0;          // daN/mm², on AG, along +x

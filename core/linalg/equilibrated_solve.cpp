@@ -9,6 +9,7 @@
 #include <Eigen/SparseLU>
 
 #include "core/linalg/extended_products.h"
+#include "core/linalg/ruiz_scaling.h"
 
 namespace thinlayer {
 
@@ -17,25 +18,6 @@ namespace {
 constexpr int ruiz_sweeps = 5;
 constexpr int refinements = 3;
 
-// Row and column scalings that bring every row's and column's largest entry near 1 (Ruiz).
-void ruiz(const Eigen::SparseMatrix<double>& A, Eigen::VectorXd& row, Eigen::VectorXd& col) {
-  const Eigen::Index n = A.rows();
-  row = Eigen::VectorXd::Ones(n);
-  col = Eigen::VectorXd::Ones(n);
-  for (int sweep = 0; sweep < ruiz_sweeps; ++sweep) {
-    Eigen::VectorXd row_max = Eigen::VectorXd::Zero(n), col_max = Eigen::VectorXd::Zero(n);
-    for (Eigen::Index j = 0; j < A.outerSize(); ++j)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
-        const double v = std::abs(row[it.row()] * it.value() * col[j]);
-        row_max[it.row()] = std::max(row_max[it.row()], v);
-        col_max[j] = std::max(col_max[j], v);
-      }
-    for (Eigen::Index i = 0; i < n; ++i) {
-      if (row_max[i] > 0) row[i] /= std::sqrt(row_max[i]);
-      if (col_max[i] > 0) col[i] /= std::sqrt(col_max[i]);
-    }
-  }
-}
 
 // Hager's (Higham's) estimate of ‖M⁻¹‖₁ from solves with M and Mᵀ.
 template <typename Solve, typename SolveTransposed>
@@ -102,13 +84,13 @@ Eigen::VectorXd solve_equilibrated(const Eigen::MatrixXd& A, const Eigen::Vector
   const Eigen::SparseMatrix<double> As = A.sparseView();
   if (A.rows() >= 200 && As.nonZeros() < A.size() / 4) return solve_equilibrated(As, b, rcond);
   Eigen::VectorXd row, col;
-  ruiz(As, row, col);
+  ruiz_scaling(As, ruiz_sweeps, row, col);
   return dense_solve(A, row, col, b, rcond);
 }
 
 Eigen::VectorXd solve_equilibrated(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, double* rcond) {
   Eigen::VectorXd row, col, x;
-  ruiz(A, row, col);
+  ruiz_scaling(A, ruiz_sweeps, row, col);
   if (sparse_solve(A, row, col, b, x, rcond)) return x;
   return dense_solve(Eigen::MatrixXd(A), row, col, b, rcond);  // says how singular
 }

@@ -7,6 +7,7 @@
 #include <umfpack.h>
 
 #include "core/linalg/extended_products.h"
+#include "core/linalg/ruiz_scaling.h"
 
 namespace thinlayer {
 
@@ -15,25 +16,6 @@ namespace {
 constexpr int ruiz_sweeps = 8;    // each halves the spread of the row and column maxima's logarithms
 constexpr int refinements = 2;    // with extended residuals, one step reaches the solution's round-off; one more checks it
 
-// Row and column scalings that bring every row's and column's largest entry near 1 (Ruiz).
-void ruiz(const Eigen::SparseMatrix<double>& A, Eigen::VectorXd& row, Eigen::VectorXd& col) {
-  const Eigen::Index n = A.rows();
-  row = Eigen::VectorXd::Ones(n);
-  col = Eigen::VectorXd::Ones(n);
-  for (int sweep = 0; sweep < ruiz_sweeps; ++sweep) {
-    Eigen::VectorXd row_max = Eigen::VectorXd::Zero(n), col_max = Eigen::VectorXd::Zero(n);
-    for (Eigen::Index j = 0; j < A.outerSize(); ++j)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
-        const double v = std::abs(row[it.row()] * it.value() * col[j]);
-        row_max[it.row()] = std::max(row_max[it.row()], v);
-        col_max[j] = std::max(col_max[j], v);
-      }
-    for (Eigen::Index i = 0; i < n; ++i) {
-      if (row_max[i] > 0) row[i] /= std::sqrt(row_max[i]);
-      if (col_max[i] > 0) col[i] /= std::sqrt(col_max[i]);
-    }
-  }
-}
 
 }  // namespace
 
@@ -75,7 +57,7 @@ bool SparseLU::factor(const Eigen::SparseMatrix<double>& A) {
     throw std::logic_error("SparseLU: the pattern changed between factorisations");
   m.A = A;
   m.A.makeCompressed();
-  ruiz(m.A, m.row, m.col);
+  ruiz_scaling(m.A, ruiz_sweeps, m.row, m.col);
   m.scaled = m.row.asDiagonal() * m.A * m.col.asDiagonal();
   m.scaled.makeCompressed();
   if (!m.symbolic) {

@@ -24,6 +24,7 @@ namespace {
 constexpr int dual_stages[] = {0, 2, 4, 6, 8};
 constexpr int mixed_stages[] = {10, 12};
 constexpr int adrift_stage = 14;
+constexpr double spring_floor = 1e-13;  // relative to the layer's largest stiffness: see `spring`
 constexpr int active_set_cap = 60;   // active-set steps per stage before the Tresca fixed point
 constexpr int settle_cap = 30;       // mixed Newton steps per stage or proximal step
 constexpr int proximal_cap = 30;
@@ -147,7 +148,16 @@ FloatingLayerRun solve_floating_layer(const Condensed& c, const ContactProblem& 
   const double kappa = adherent_stiffness(problem);
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(x.size());
   const Budget budget{options.max_iterations};
-  auto spring = [&](double k) { return Eigen::MatrixXd(kappa * std::pow(10.0, -k) * P); };
+  // A spring weaker than double precision can hold against the layer's own stiffness is no spring:
+  // the Jacobi-scaled layer's floating modes sit at spring / S_ii on the rows it holds, and far
+  // below 1e-13 its Cholesky fails (a layer much stiffer than its adherents: the bar's rows 1, 2, 4
+  // at eps >= 1 mm). The spring is floored at spring_floor × the layer's largest stiffness on those
+  // rows (daN/mm). On the 119 scenes of the scene set it never binds (the same steps and residuals).
+  double held = 0;  // the layer's largest stiffness on the rows the spring holds
+  for (Eigen::Index i = 0; i < P.rows(); ++i)
+    if (P(i, i) > 0) held = std::max(held, std::abs(c.S(i, i)));
+  const double floor = spring_floor * held;
+  auto spring = [&](double k) { return Eigen::MatrixXd(std::max(kappa * std::pow(10.0, -k), floor) * P); };
   auto report = [&](const char* what, double k, double residual) {
     if (!options.verbose) return;
     std::fprintf(stderr, "  layer: %s spring kappa*1e-%g, %d linear solves so far", what, k, run.newton_steps);

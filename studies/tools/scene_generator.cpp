@@ -1,5 +1,7 @@
 #include "studies/tools/scene_generator.h"
 
+#include "cases/bar/bar.h"
+
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -23,7 +25,7 @@ class Draws {
 
 constexpr double eps_min = 1e-8;
 constexpr double dovetail_thickest = 0.1;  // dovetail::make_layer_meshes' limit (a tenth of L)
-constexpr double bar_thickest = 4.0;       // mm: the bar's documented limit (a tenth of its side)
+constexpr double bar_thickest = bar::thickest_layer;  // mm: the bar's documented limit
 const char* const shipped_scenes[] = {"lap_joint/lap_joint.json", "double_lap/double_lap.json",
                                       "stepped_lap/stepped_lap.json"};
 

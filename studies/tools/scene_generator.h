@@ -9,7 +9,7 @@
 //    the bar 20 % (Table 3's six rows), a shipped scene file 20 % (cases/lap_joint, cases/double_lap,
 //    cases/stepped_lap);
 //  - ε log-uniform from 1e-8 to the thickest the case allows (dovetail 0.1, the bar's documented
-//    4 mm, a scene file's own limit);
+//    1 mm (bar::thickest_layer), a scene file's own limit);
 //  - the dovetail: f uniform in [0, 1], the element size along S log-uniform in [h_min, h_max],
 //    2…4 elements through the layer;
 //  - the bar: 16…128 elements along AD (log-uniform), 2…4 elements through the layer, the load scale
