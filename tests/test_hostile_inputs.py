@@ -152,8 +152,10 @@ def refused_inputs():
     refused("--max-iterations 0", solve(["--max-iterations", "0"]), "--max-iterations must be >= 1")
     refused("--diagonal with Q1", solve(["--diagonal", "left"]), "--diagonal applies to P1")
     refused("--scale overflowing lambda_bar", solve(["--scale", "1e308"]), "overflows")
-    # Geometric sanity: a layer thicker than a tenth of the joint.
+    # Geometric sanity: a layer thicker than the case allows.
     refused("--eps 50 on the 40 mm bar", layer(["--eps", "50"]), "no thin layer for the bar")
+    # The bar's own limit (issue 26, item 7): its rows' layers are nearly incompressible above 1 mm.
+    refused("--eps 1.5 on the bar, above its 1 mm", layer(["--eps", "1.5"]), "at most 1 mm")
     refused("--eps 1e300 on the dovetail", layer(["--eps", "1e300"], "dovetail"), "no thin layer for the dovetail")
     refused("--eps 0.5 in a dovetail study", ["study", "dovetail", "--eps", "0.5"], "no thin layer")
     refused("--rate-eps that grows", ["study", "convergence", "--rate-eps", "1e-5,1e-4,1e-6"], "the grid must decrease")
