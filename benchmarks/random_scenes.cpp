@@ -4,6 +4,9 @@
 //
 //   build/thinlayer_random_scenes --seeds 1-200 --csv seeds.csv
 //   build/thinlayer_random_scenes --seeds 1-20 --h-min 0.0125      # the CTest sample's meshes
+//   build/thinlayer_random_scenes --seeds 1-200 --list             # what each seed draws, no solve
+// Each line's scene is printed before its solve starts, so a run stopped by a time limit still
+// says which scene it was on.
 // Exit status 0 only if every seed converged. Times are of a shared machine: compare within one
 // run. One BLAS thread, as in every study.
 #include <algorithm>
@@ -33,7 +36,7 @@ double quantile(std::vector<double> v, double q) {
 }
 
 int usage() {
-  std::fprintf(stderr, "usage: thinlayer_random_scenes --seeds FIRST-LAST [--h-min H] [--csv FILE]\n");
+  std::fprintf(stderr, "usage: thinlayer_random_scenes --seeds FIRST-LAST [--h-min H] [--csv FILE] [--list]\n");
   return 2;
 }
 
@@ -41,6 +44,7 @@ int run(int argc, char** argv) {
   int first = 1, last = 20;
   GeneratorRanges ranges;
   std::string csv;
+  bool list = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--seeds" && i + 1 < argc) {
@@ -48,11 +52,17 @@ int run(int argc, char** argv) {
     } else if (a == "--h-min" && i + 1 < argc) {
       ranges.h_min = std::stod(argv[++i]);
       if (!(ranges.h_min > 0 && ranges.h_min <= ranges.h_max)) return usage();
+    } else if (a == "--list") {
+      list = true;
     } else if (a == "--csv" && i + 1 < argc) {
       csv = argv[++i];
     } else {
       return usage();
     }
+  }
+  if (list) {
+    for (int seed = first; seed <= last; ++seed) std::printf("%s\n", generate_scene(seed, ranges).describe().c_str());
+    return 0;
   }
   std::vector<Row> rows;
   std::printf("%-72s %6s %10s %10s %8s %8s  %s\n", "scene", "steps", "residual", "floor", "solve_s", "setup_s", "stop");
@@ -60,6 +70,8 @@ int run(int argc, char** argv) {
     const GeneratedScene scene = generate_scene(seed, ranges);
     Row row;
     row.description = scene.describe();
+    std::printf("%-72s", row.description.c_str());
+    std::fflush(stdout);
     try {
       const GeneratedOutcome o = solve_generated(scene, {}, THINLAYER_CASES_DIR);
       row.steps = o.report.iterations;
@@ -72,7 +84,7 @@ int run(int argc, char** argv) {
     } catch (const std::exception& e) {
       row.stop_cause = std::string("threw: ") + e.what();
     }
-    std::printf("%-72s %6d %10.2e %10.2e %8.3f %8.3f  %s\n", row.description.c_str(), row.steps, row.residual, row.floor,
+    std::printf(" %6d %10.2e %10.2e %8.3f %8.3f  %s\n", row.steps, row.residual, row.floor,
                 row.solve_s, row.setup_s, row.stop_cause.c_str());
     std::fflush(stdout);
     rows.push_back(row);
