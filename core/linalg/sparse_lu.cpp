@@ -1,6 +1,7 @@
 #include "core/linalg/sparse_lu.h"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -71,7 +72,11 @@ bool SparseLU::factor(const Eigen::SparseMatrix<double>& A) {
   const int status =
       umfpack_di_numeric(m.Ap.data(), m.Ai.data(), m.scaled.valuePtr(), m.symbolic, &m.numeric, m.control, m.info);
   rcond_ = std::isfinite(m.info[UMFPACK_RCOND]) ? m.info[UMFPACK_RCOND] : 0.0;
-  return status == UMFPACK_OK;
+  // A pivot below the unit round-off times the largest is one that rounding alone could have
+  // made of an exact zero (the LU's backward error is of that order): singular to working
+  // precision. UMFPACK reports only exact zeros as singular; a layer left floating free by its
+  // statuses gives rcond 4e-19 and a finite, meaningless answer (MixedSystem.AFloatingLayerHeld…).
+  return status == UMFPACK_OK && rcond_ >= std::numeric_limits<double>::epsilon();
 }
 
 Eigen::VectorXd SparseLU::solve(const Eigen::VectorXd& b) const {

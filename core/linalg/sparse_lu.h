@@ -21,7 +21,8 @@ class SparseLU {
   SparseLU& operator=(const SparseLU&) = delete;
 
   // Factors A (its pattern the same at every call; analysed at the first). False if A is singular
-  // to working precision (a floating body held by nothing).
+  // to working precision: a zero pivot, or rcond below the unit round-off (a floating body held by
+  // nothing).
   bool factor(const Eigen::SparseMatrix<double>& A);
   // x with A x = b, refined twice.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
