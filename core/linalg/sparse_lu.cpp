@@ -17,7 +17,6 @@ namespace {
 constexpr int ruiz_sweeps = 8;    // each halves the spread of the row and column maxima's logarithms
 constexpr int refinements = 2;    // with extended residuals, one step reaches the solution's round-off; one more checks it
 
-
 }  // namespace
 
 struct SparseLU::Impl {

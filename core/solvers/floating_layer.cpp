@@ -24,7 +24,7 @@ namespace {
 constexpr int dual_stages[] = {0, 2, 4, 6, 8};
 constexpr int mixed_stages[] = {10, 12};
 constexpr int adrift_stage = 14;
-constexpr double spring_floor = 1e-13;  // relative to the layer's largest stiffness: see `spring`
+constexpr double spring_floor = 1e-13;  // × the layer's largest stiffness on the spring's rows: see `spring`
 constexpr int active_set_cap = 60;   // active-set steps per stage before the Tresca fixed point
 constexpr int settle_cap = 30;       // mixed Newton steps per stage or proximal step
 constexpr int proximal_cap = 30;
