@@ -75,6 +75,14 @@ void record_film_admissibility(SceneRecord& record) {
   record.numbers["film_strain_max"] = film.strain_max;
 }
 
+std::string film_line(const SceneRecord& record) {
+  if (!record.numbers.count("film_slip_over_h")) return "";
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "film: largest slip %.3g elements along S, largest strain %.3g",
+                record.numbers.at("film_slip_over_h"), record.numbers.at("film_strain_max"));
+  return buf;
+}
+
 std::string film_warning(const FilmAdmissibility& film) {
   if (film.admissible()) return "";
   char buf[320];

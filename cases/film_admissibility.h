@@ -32,6 +32,10 @@ FilmAdmissibility film_admissibility(const SceneRecord& record);
 // Stores both numbers in the record (numbers "film_slip_over_h", "film_strain_max").
 void record_film_admissibility(SceneRecord& record);
 
+// "film: largest slip … elements along S, largest strain …" of a record that holds both numbers
+// (record_film_admissibility), "" of any other: the line both forms of `solve` print.
+std::string film_line(const SceneRecord& record);
+
 // One line for `solve`, or "" where the answer is admissible (or the record is not a layer scene's).
 std::string film_warning(const FilmAdmissibility& film);
 std::string film_warning(const SceneRecord& record);

@@ -439,4 +439,28 @@ TEST_F(Cli, TimingStudyWritesTimeAgainstErrorForEverySolver) {
   for (long long p : f.read_ints("/checks/pass")) EXPECT_EQ(p, 1);
 }
 
+// SPEC §1.5, film admissibility, as `solve` says it: a text line, a "film" object in --json and
+// one warning line on stderr where the film strays (the bar's row 5 at 1e-4 slides ~56 elements);
+// none of the three in limit mode. Both forms of `solve` (a case, a scene file).
+TEST_F(Cli, SolveReportsTheFilmInTextJsonAndAWarning) {
+  const CliRun text = run("solve --case bar --mode layer --row 5 --eps 1e-4");
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("  film: largest slip 5"), std::string::npos) << text.out;
+  EXPECT_NE(text.err.find("thinlayer solve: warning: the layer's answer is outside the model's assumptions"),
+            std::string::npos)
+      << text.err;
+  const CliRun json = run("solve --case bar --mode layer --row 5 --eps 1e-4 --json");
+  EXPECT_NE(json.out.find("\"film\":{\"slip_over_h\":5"), std::string::npos) << json.out;
+  const CliRun limit = run("solve --case bar --row 5 --json");
+  EXPECT_EQ(limit.out.find("film"), std::string::npos) << limit.out;
+  EXPECT_EQ(limit.err.find("warning"), std::string::npos) << limit.err;
+
+  const std::string scene = std::string(THINLAYER_CASES_DIR) + "/lap_joint/lap_joint.json";
+  const CliRun layer = run("solve --scene " + scene + " --mode layer --eps 0.01 --json");
+  EXPECT_NE(layer.out.find("\"film\":{\"slip_over_h\":"), std::string::npos) << layer.out << layer.err;
+  const CliRun layer_text = run("solve --scene " + scene + " --mode layer --eps 0.01");
+  EXPECT_NE(layer_text.out.find("  film: largest slip "), std::string::npos) << layer_text.out;
+  EXPECT_EQ(run("solve --scene " + scene + " --json").out.find("film"), std::string::npos);
+}
+
 }  // namespace

@@ -18,6 +18,7 @@
 #include "core/io/vtu_writer.h"
 #include "cases/bar/bar_scenes.h"
 #include "studies/cli/command_scene.h"
+#include "studies/drivers/scene_solve_output.h"
 #include "cases/dovetail/dovetail_scenes.h"
 #include "studies/tools/format.h"
 #include "studies/cli/options.h"
@@ -182,10 +183,7 @@ void print_report(const SolveReport& report, const SceneRecord& record) {
 }
 
 // SPEC §1.5, film admissibility: how far the layer slid and how much it strained.
-void print_film(const SceneRecord& record) {
-  say("  film: largest slip %.3g elements along S, largest strain %.3g\n", record.numbers.at("film_slip_over_h"),
-      record.numbers.at("film_strain_max"));
-}
+void print_film(const SceneRecord& record) { say("  %s\n", film_line(record).c_str()); }
 
 void print_layer(const MeshQuality& q, double eps, const LayerCounts& c) {
   say("  layer mesh: %d Q1 cells, angles %.1f..%.1f deg, aspect ratio up to %.3g (eps %g), "
@@ -267,9 +265,7 @@ std::string summary_line(const SolveInput& in, const SceneRecord& record, const 
       {"out", in.out.empty() ? nullptr : nlohmann::json(in.out)},
       {"vtu", in.vtu.empty() ? nullptr : nlohmann::json(in.vtu)},
   };
-  if (record.numbers.count("film_slip_over_h"))  // SPEC §1.5: a layer scene's film admissibility
-    j["film"] = {{"slip_over_h", record.numbers.at("film_slip_over_h")},
-                 {"strain_max", record.numbers.at("film_strain_max")}};
+  if (nlohmann::json film = film_json(record); !film.is_null()) j["film"] = std::move(film);
   return j.dump();
 }
 

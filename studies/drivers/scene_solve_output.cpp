@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cases/film_admissibility.h"
 #include "studies/tools/format.h"
 
 namespace thinlayer {
@@ -56,8 +57,7 @@ void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, doubl
     print_counts("S+", s.counts.plus_face);
     print_counts("S-", s.counts.minus_face);
     print_counts("combined", s.counts.combined);
-    std::printf("  film: largest slip %.3g elements along S, largest strain %.3g\n",
-                s.record.numbers.at("film_slip_over_h"), s.record.numbers.at("film_strain_max"));
+    std::printf("  %s\n", film_line(s.record).c_str());
   }
   const SolveReport& r = s.report;
   const std::string outcome = r.converged ? "converged" : std::string("NOT converged (") + to_string(r.stop_cause) + ")";
@@ -120,10 +120,13 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
       {"out", out.empty() ? nullptr : nlohmann::json(out)},
       {"vtu", vtu.empty() ? nullptr : nlohmann::json(vtu)},
   };
-  if (record.numbers.count("film_slip_over_h"))  // SPEC §1.5: a layer scene's film admissibility
-    j["film"] = {{"slip_over_h", record.numbers.at("film_slip_over_h")},
-                 {"strain_max", record.numbers.at("film_strain_max")}};
+  if (nlohmann::json film = film_json(record); !film.is_null()) j["film"] = std::move(film);
   return j.dump();
+}
+
+nlohmann::json film_json(const SceneRecord& record) {
+  if (!record.numbers.count("film_slip_over_h")) return nullptr;
+  return {{"slip_over_h", record.numbers.at("film_slip_over_h")}, {"strain_max", record.numbers.at("film_strain_max")}};
 }
 
 void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps) {

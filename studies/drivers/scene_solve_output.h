@@ -5,6 +5,8 @@
 // carries a load) and the warning of a joint that carries none (every bondline node open).
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "cases/scene/scene_file_scenes.h"
 
 namespace thinlayer {
@@ -20,6 +22,10 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
 // chooses an engineer's glue's law (SPEC §1.3 at that thickness), and means nothing otherwise.
 // Throws std::invalid_argument.
 void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps);
+
+// --json's "film" object of a layer scene's record (SPEC §1.5: slip_over_h, strain_max), null for
+// any other record; both forms of `solve` write it.
+nlohmann::json film_json(const SceneRecord& record);
 
 // "" when the joint carries a load; else one line saying that every bondline node is open.
 std::string no_load_warning(const SceneFileScene& scene);
