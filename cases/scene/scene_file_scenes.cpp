@@ -10,6 +10,7 @@
 #include "cases/scene/scene_checks.h"
 #include "cases/scene/scene_reference.h"
 #include "core/io/scene_id_number.h"
+#include "core/solvers/bonded_solve.h"
 #include "core/io/units.h"
 
 namespace thinlayer {
@@ -161,7 +162,9 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
                                       double status_tolerance) {
   const SceneSpec& spec = bulk.spec();
   const ContactProblem problem(bulk.system(), bulk.limit_interfaces(eps));
-  const CondensedInterface* condensed = solver == SolverKind::Fast ? &bulk.condensed() : nullptr;
+  // A scene bonded on every face is one sparse solve (core/solvers/bonded_solve.h): nothing to condense.
+  const CondensedInterface* condensed =
+      solver == SolverKind::Fast && !every_interface_bonded(problem) ? &bulk.condensed() : nullptr;
   SceneFileScene scene;
   scene.report = run_solver(problem, condensed, solver, options);
   SceneRecord& r = scene.record;
@@ -192,7 +195,7 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   const LinearSystem system(layer.model);
   const ContactProblem problem(system, layer.interfaces);
   std::unique_ptr<CondensedInterface> condensed;
-  if (solver == SolverKind::Fast) condensed = std::make_unique<CondensedInterface>(problem);
+  if (solver == SolverKind::Fast && !every_interface_bonded(problem)) condensed = std::make_unique<CondensedInterface>(problem);
   SceneFileScene scene;
   scene.report = run_solver(problem, condensed.get(), solver, options);
   SceneRecord& r = scene.record;

@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include "core/solvers/active_set.h"
+#include "core/solvers/bonded_solve.h"
 #include "core/solvers/floating_layer.h"
 #include "core/solvers/friction_path.h"
 #include "core/solvers/mixed_system.h"
@@ -186,11 +187,13 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
     throw std::invalid_argument("solve_fast: the warm start's layer DOFs have " +
                                 std::to_string(options.initial_w.size()) + " entries, the problem " +
                                 std::to_string(condensed.num_floating_unknowns()));
+  if (every_interface_bonded(problem)) return solve_bonded(problem, options);  // linear: no status to search
   if (!options.friction_path.empty()) return solve_fast_along_friction_path(problem, condensed, options);
   return attempt(problem, condensed, options);
 }
 
 SolveReport solve_fast(const ContactProblem& problem, const SolverOptions& options) {
+  if (every_interface_bonded(problem)) return solve_bonded(problem, options);  // nothing to condense
   const CondensedInterface condensed(problem);
   return solve_fast(problem, condensed, options);
 }

@@ -6,7 +6,8 @@
 // answer; if the active set cycles, projected Gauss-Seidel sweeps on the same condensed
 // problem (NSGS) move the iterate before the Newton steps resume. With
 // SolverOptions::friction_path set, the solve follows that continuation in the Coulomb
-// coefficient first (core/solvers/friction_path.h).
+// coefficient first (core/solvers/friction_path.h). A scene bonded on every face is linear and
+// takes one sparse solve instead (core/solvers/bonded_solve.h).
 #include "core/solvers/condensed_interface.h"
 #include "core/solvers/solve_report.h"
 
