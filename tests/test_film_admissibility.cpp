@@ -49,5 +49,23 @@ TEST(FilmAdmissibility, TheLargestSlipIsTheLargestTangentialJumpOverItsElement) 
   EXPECT_GE(film_admissibility(s.record).slip_over_h, largest * (1 - 1e-12));
 }
 
+TEST(FilmAdmissibility, TheWarningNamesOnlyTheAssumptionBroken) {
+  FilmAdmissibility strained;  // a glue line strained 2.4 % that did not slide (a scarf joint under 100 MPa)
+  strained.slip_over_h = 5e-17;
+  strained.strain_max = 0.024;
+  EXPECT_NE(film_warning(strained).find("largest strain is 0.024"), std::string::npos) << film_warning(strained);
+  EXPECT_EQ(film_warning(strained).find("slid"), std::string::npos) << film_warning(strained);
+  FilmAdmissibility slid;  // a film that slid three elements, barely strained
+  slid.slip_over_h = 3;
+  slid.slip_where = "S+ node 4";
+  slid.strain_max = 1e-4;
+  EXPECT_NE(film_warning(slid).find("slid 3 elements along S (S+ node 4"), std::string::npos) << film_warning(slid);
+  EXPECT_EQ(film_warning(slid).find("strain"), std::string::npos) << film_warning(slid);
+  FilmAdmissibility both = slid;
+  both.strain_max = 0.5;
+  EXPECT_NE(film_warning(both).find("slid 3 elements"), std::string::npos);
+  EXPECT_NE(film_warning(both).find("and its largest strain is 0.5"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace thinlayer
