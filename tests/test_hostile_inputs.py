@@ -436,6 +436,8 @@ def signal_cases():
     killed("SIGINT during study table3", ["study", "table3", "--quick", "--quiet", "--out", "study"], signal.SIGINT, True)
     killed("SIGTERM during study table3", ["study", "table3", "--quick", "--quiet", "--out", "study"], signal.SIGTERM,
            True)
+    # A hang-up (the terminal closed; under mpirun a Ctrl-C often reaches a rank as SIGHUP first).
+    killed("SIGHUP during study table3", ["study", "table3", "--quick", "--quiet", "--out", "study"], signal.SIGHUP, True)
     killed("SIGTERM during solve", layer(["--eps", "1e-3", "--out", "study/results.h5"], "dovetail"), signal.SIGTERM,
            False)
     killed("SIGTERM during the report", ["previous.h5", "study"], signal.SIGTERM, True, report=True)

@@ -34,8 +34,8 @@ std::string temporary_name_beside(const std::string& target);
 void register_temporary(const std::string& path);
 void unregister_temporary(const std::string& path);
 
-// SIGINT and SIGTERM: remove the registered temporary files, then die of the same signal
-// (so a shell sees the usual status 130 / 143). Also forwards the signal to a child set by
+// SIGINT, SIGTERM, SIGHUP and SIGPIPE: remove the registered temporary files, then die of the
+// same signal (so a shell sees the usual status 130 / 143). Also forwards the signal to a child set by
 // set_signal_child (the report's interpreter), which cleans up its own files.
 void install_signal_cleanup();
 void set_signal_child(int pid);  // 0: none

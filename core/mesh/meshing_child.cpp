@@ -120,7 +120,7 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   ::prctl(PR_SET_DUMPABLE, 0);  // no core dump, not even to a core_pattern pipe
   if (::getppid() != parent) ::_exit(71);  // the parent died before the line above
-  for (int s : {SIGINT, SIGTERM, SIGPIPE}) ::signal(s, SIG_DFL);  // not the parent's cleanup handler
+  for (int s : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) ::signal(s, SIG_DFL);  // not the parent's cleanup handler
   const int null = ::open("/dev/null", O_RDWR);
   for (int fd : {0, 1, 2}) ::dup2(null, fd);
   ::dup2(pipe_write, 3);
