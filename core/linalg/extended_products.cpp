@@ -2,8 +2,6 @@
 
 namespace thinlayer {
 
-using Long = long double;
-
 LongVector times(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& x) {
   LongVector y = LongVector::Zero(A.rows());
   for (int j = 0; j < A.outerSize(); ++j)

@@ -10,7 +10,8 @@
 
 namespace thinlayer {
 
-using LongVector = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
+using Long = long double;  // the extended type every sum here is carried in
+using LongVector = Eigen::Matrix<Long, Eigen::Dynamic, 1>;
 
 LongVector times(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& x);            // A x
 LongVector transpose_times(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& x);  // Aᵀ x

@@ -103,8 +103,6 @@ double Residual::floor() const {
 
 namespace {
 
-using Long = long double;
-
 // A band's imbalance (extended precision) and its round-off bound, evaluated in its column basis
 // and written over the nodal ones at its free DOFs.
 void band_imbalance(const FloatingBand& band, const Eigen::VectorXd& z, const LongVector& interface_force,
