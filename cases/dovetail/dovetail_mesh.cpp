@@ -166,7 +166,7 @@ void check_limit_mesh(const Mesh& mesh, const std::string& body, const std::stri
 }
 
 void check_layer_inputs(const LimitMeshes& limit, double eps, int layer_elements) {
-  if (!(std::isfinite(eps) && eps > 0 && eps <= 0.1))
+  if (!(std::isfinite(eps) && eps > 0 && eps <= thickest_layer))
     throw std::invalid_argument("dovetail layer meshes: eps must be in (0, 0.1] (got " +
                                 std::to_string(eps) + ")");
   if (layer_elements < 2)

@@ -86,7 +86,11 @@ struct LimitMeshes {
 };
 LimitMeshes make_limit_meshes(const MeshOptions& options = {});
 
-// Layer-mode meshes for a layer of thickness eps ∈ (0, 0.1]:
+// The thickest layer of the layer mode: a tenth of the characteristic length L = 1 (a thicker layer
+// is no thin layer).
+constexpr double thickest_layer = 0.1;
+
+// Layer-mode meshes for a layer of thickness eps ∈ (0, thickest_layer]:
 //  base:  limit.base, unchanged;
 //  tenon: limit.tenon with every node moved by offset_map(·, eps): same cells, node
 //         numbering and named sets ("S", "top"); its S nodes lie on the offset faces;

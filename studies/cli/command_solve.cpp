@@ -39,7 +39,9 @@ const std::set<std::string> dovetail_only = {"law-case", "gamma", "delta", "h-in
 // The largest layer accepted: the dovetail's is a tenth of its characteristic length 1 (a thicker
 // layer is no thin layer, and the layer meshes stop there); the bar's is 1 mm, where every row's
 // nearly incompressible layer still converges (bar::thickest_layer says why).
-double thickest_layer(const std::string& case_name) { return case_name == "bar" ? bar::thickest_layer : 0.1; }
+double thickest_layer(const std::string& case_name) {
+  return case_name == "bar" ? bar::thickest_layer : dovetail::thickest_layer;
+}
 std::string thickest_reason(const std::string& case_name) {
   return case_name == "bar" ? "a fortieth of its side: Table 3's layers are nearly incompressible above"
                             : "a tenth of its size";

@@ -1,6 +1,7 @@
 #include "studies/tools/scene_generator.h"
 
 #include "cases/bar/bar.h"
+#include "cases/dovetail/dovetail_mesh.h"
 
 #include <cmath>
 #include <cstdio>
@@ -24,8 +25,6 @@ class Draws {
 };
 
 constexpr double eps_min = 1e-8;
-constexpr double dovetail_thickest = 0.1;  // dovetail::make_layer_meshes' limit (a tenth of L)
-constexpr double bar_thickest = bar::thickest_layer;  // mm: the bar's documented limit
 const char* const shipped_scenes[] = {"lap_joint/lap_joint.json", "double_lap/double_lap.json",
                                       "stepped_lap/stepped_lap.json"};
 
@@ -46,14 +45,14 @@ GeneratedScene generate_scene(int seed, const GeneratorRanges& ranges) {
       } else {
         s.exponents = {draw.uniform(0.0, 2.0), draw.uniform(0.0, 1.95)};
       }
-      s.eps = draw.log_uniform(eps_min, dovetail_thickest);
+      s.eps = draw.log_uniform(eps_min, dovetail::thickest_layer);
       s.friction = draw.uniform();
       s.h_interface = draw.log_uniform(ranges.h_min, ranges.h_max);
       s.layer_elements = draw.integer(2, 4);
       break;
     case GeneratedScene::Kind::Bar:
       s.bar_row = draw.integer(1, 6);
-      s.eps = draw.log_uniform(eps_min, bar_thickest);
+      s.eps = draw.log_uniform(eps_min, bar::thickest_layer);
       s.bar_nx = static_cast<int>(std::lround(draw.log_uniform(16, ranges.bar_nx_max)));
       s.layer_elements = draw.integer(2, 4);
       s.load_scale = draw.log_uniform(0.1, 10.0);
