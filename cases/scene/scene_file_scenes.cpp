@@ -11,6 +11,7 @@
 #include "cases/scene/scene_reference.h"
 #include "core/io/scene_id_number.h"
 #include "core/solvers/bonded_solve.h"
+#include "core/solvers/sparse_newton.h"
 #include "core/io/units.h"
 
 namespace thinlayer {
@@ -162,9 +163,13 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
                                       double status_tolerance) {
   const SceneSpec& spec = bulk.spec();
   const ContactProblem problem(bulk.system(), bulk.limit_interfaces(eps));
-  // A scene bonded on every face is one sparse solve (core/solvers/bonded_solve.h): nothing to condense.
+  // A scene bonded on every face is one sparse solve (core/solvers/bonded_solve.h), one with a body
+  // held by its bondlines alone the sparse Newton (core/solvers/sparse_newton.h): nothing to condense
+  // unless that stops short.
   const CondensedInterface* condensed =
-      solver == SolverKind::Fast && !every_interface_bonded(problem) ? &bulk.condensed() : nullptr;
+      solver == SolverKind::Fast && !every_interface_bonded(problem) && !takes_sparse_newton(problem)
+          ? &bulk.condensed()
+          : nullptr;
   SceneFileScene scene;
   scene.report = run_solver(problem, condensed, solver, options);
   SceneRecord& r = scene.record;

@@ -90,6 +90,7 @@ SceneRecord record_scene(const std::string& id, const Model& model, const Contac
   const Eigen::VectorXd interface_force = problem.B().transpose() * report.r;
   s.reactions = problem.system().reactions(u_full, problem.system().scatter(interface_force));
   s.text["solver"] = report.solver;
+  if (!report.method.empty()) s.text["solver_method"] = report.method;
   s.text["solver_message"] = report.message;
   s.integers["iterations"] = report.iterations;
   s.integers["converged"] = report.converged ? 1 : 0;

@@ -9,14 +9,10 @@
 
 namespace thinlayer {
 
-
-
-
-Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, double complementarity_scale,
-                   bool skip_frictionless_rows) {
-  const int m = problem.num_nodes();
-  Condensed c{ci.W(), ci.g0(), ci.B_L(), ci.S(), ci.f_L(), Eigen::VectorXd::Zero(2 * m), {}, {}, {}, {}};
-  for (int k = 0; k < m; ++k) {
+Condensed law_rules(const ContactProblem& problem, const Eigen::VectorXd& kappa, bool skip_frictionless_rows) {
+  Condensed c;
+  c.kappa = kappa;
+  for (int k = 0; k < problem.num_nodes(); ++k) {
     const InterfaceLaw& law = problem.law(k);
     c.normal.push_back(law.normal_active());
     c.bilateral.push_back(law.bilateral);
@@ -28,14 +24,24 @@ Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, 
       c.tangential.push_back(law.normal_active() && (law.tangential_active() || !skip_frictionless_rows));
       c.friction.push_back(law.tangential_active() ? law.friction : 0.0);
     }
-    for (int row = 0; row < 2; ++row) {
-      const double C = problem.compliance()[2 * k + row];
-      if (std::isfinite(C)) c.W(2 * k + row, 2 * k + row) += C;
-      // The complementarity parameter of the Newton method: the nodal stiffness of both sides
-      // (not 1/diag(W + C), which is zero on a face of a floating body), scaled down so that
-      // the statuses follow the forces more than the jumps (see SolverOptions).
-      c.kappa[2 * k + row] = complementarity_scale * problem.kappa()[2 * k + row];
-    }
+  }
+  return c;
+}
+
+Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, double complementarity_scale,
+                   bool skip_frictionless_rows) {
+  // The complementarity parameter of the Newton method: the nodal stiffness of both sides (not
+  // 1/diag(W + C), which is zero on a face of a floating body), scaled down so that the statuses
+  // follow the forces more than the jumps (see SolverOptions).
+  Condensed c = law_rules(problem, complementarity_scale * problem.kappa(), skip_frictionless_rows);
+  c.W = ci.W();
+  c.g0 = ci.g0();
+  c.B_L = ci.B_L();
+  c.S = ci.S();
+  c.f_L = ci.f_L();
+  for (int i = 0; i < c.W.rows(); ++i) {
+    const double C = problem.compliance()[i];
+    if (std::isfinite(C)) c.W(i, i) += C;
   }
   return c;
 }

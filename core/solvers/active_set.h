@@ -28,6 +28,10 @@ struct Condensed {
   std::vector<bool> bilateral;            // a bonded node: no stop, no skidding block
 };
 
+// The law's flags of every row (W and the floating part empty) with the complementarity
+// parameters κ: all that guess_statuses reads.
+Condensed law_rules(const ContactProblem& problem, const Eigen::VectorXd& kappa, bool skip_frictionless_rows = true);
+
 // The condensed problem of a scene, with the complementarity parameter κ of each row scaled
 // by complementarity_scale (SolverOptions), and the rows that carry no force marked.
 Condensed condense(const ContactProblem& problem, const CondensedInterface& ci, double complementarity_scale,

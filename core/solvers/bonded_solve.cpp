@@ -45,6 +45,7 @@ SolveReport solve_bonded(const ContactProblem& problem, const SolverOptions& opt
   const auto start = std::chrono::steady_clock::now();
   SolveReport report;
   report.solver = "fast";
+  report.method = "bonded solve";
   report.tolerance = options.tolerance;
   MixedSystem mixed(problem);
   const MixedSystem::Answer answer = mixed.solve(bonded_statuses(problem));

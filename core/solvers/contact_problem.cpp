@@ -232,6 +232,23 @@ std::vector<NodeStatus> classify_statuses(const std::vector<InterfaceLaw>& laws,
   return status;
 }
 
+// The adherents' median nodal stiffness along the interfaces: the scale of the layer solvers' springs.
+double adherent_stiffness(const ContactProblem& problem) {
+  const LinearSystem& system = problem.system();
+  std::vector<double> k;
+  for (int n = 0; n < problem.num_nodes(); ++n)
+    for (int dof : {problem.node(n).plus_dof_x, problem.node(n).minus_dof_x}) {
+      if (dof < 0) continue;
+      const int free = system.free_index(dof);
+      if (free >= 0 && !system.floating(free)) k.push_back(system.K().coeff(free, free));
+    }
+  if (k.empty()) {  // only floating bodies touch the interfaces: their own stiffness
+    for (int i = 0; i < system.num_free(); ++i) k.push_back(system.K().coeff(i, i));
+  }
+  std::nth_element(k.begin(), k.begin() + k.size() / 2, k.end());
+  return k[k.size() / 2];
+}
+
 NodeStatus combined_status(NodeStatus plus_face, NodeStatus minus_face) {
   if (plus_face == NodeStatus::Gap || minus_face == NodeStatus::Gap) return NodeStatus::Gap;
   if (plus_face == NodeStatus::Slide || minus_face == NodeStatus::Slide) return NodeStatus::Slide;

@@ -116,6 +116,10 @@ std::vector<NodeStatus> classify_statuses(const std::vector<InterfaceLaw>& laws,
                                           const Eigen::VectorXd& sigma_T, double tolerance);
 StatusCount count_statuses(const std::vector<NodeStatus>& statuses);
 
+// The adherents' median nodal stiffness (daN/mm) along the interfaces (a floating body's own where
+// only floating bodies touch them): the scale of a floating layer's selection springs.
+double adherent_stiffness(const ContactProblem& problem);
+
 // The status of a point of S seen through the two faces of the layer (SPEC §2.2): gap if
 // either face is open, else slide if either face slides, else stick.
 NodeStatus combined_status(NodeStatus plus_face, NodeStatus minus_face);

@@ -16,6 +16,7 @@
 #include "core/solvers/floating_layer.h"
 #include "core/solvers/friction_path.h"
 #include "core/solvers/mixed_system.h"
+#include "core/solvers/sparse_newton.h"
 
 namespace thinlayer {
 
@@ -100,6 +101,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   int outer_steps = 0;   // floating layer: spring stages and proximal steps
   bool adrift = false;   // floating layer: the proximal steps kept following a pushed layer
   bool capped = false;
+  report.method = nw == 0 ? "condensed active set" : "floating-layer ladder";
   if (nw == 0) {
     run = active_set(c, problem, statuses, r, w, max_iterations);
     report.iterations = run.iterations;
@@ -175,6 +177,22 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   return report;
 }
 
+// A body held by contact and friction alone, and no layer band: the sparse Newton first
+// (core/solvers/sparse_newton.h); where it stops short, the condensed path from rest, its steps
+// added and its message saying so.
+bool sparse_newton_first(const ContactProblem& problem, const SolverOptions& options) {
+  return options.sparse_newton && takes_sparse_newton(problem) && options.friction_path.empty() && options.initial_r.size() == 0 &&
+         options.initial_w.size() == 0;
+}
+
+SolveReport after_sparse_newton(const SparseNewtonRun& newton, SolveReport fallback) {
+  fallback.iterations += newton.report.iterations;
+  fallback.wall_time_s += newton.report.wall_time_s;
+  fallback.method = fallback.method + " after sparse Newton";
+  fallback.message += "; taken over from the sparse Newton, which stopped: " + newton.report.message;
+  return fallback;
+}
+
 }  // namespace
 
 SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& condensed,
@@ -188,12 +206,23 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
                                 std::to_string(options.initial_w.size()) + " entries, the problem " +
                                 std::to_string(condensed.num_floating_unknowns()));
   if (every_interface_bonded(problem)) return solve_bonded(problem, options);  // linear: no status to search
+  if (sparse_newton_first(problem, options)) {
+    const SparseNewtonRun newton = solve_sparse_newton(problem, options);
+    if (newton.report.converged) return newton.report;
+    return after_sparse_newton(newton, attempt(problem, condensed, options));
+  }
   if (!options.friction_path.empty()) return solve_fast_along_friction_path(problem, condensed, options);
   return attempt(problem, condensed, options);
 }
 
 SolveReport solve_fast(const ContactProblem& problem, const SolverOptions& options) {
   if (every_interface_bonded(problem)) return solve_bonded(problem, options);  // nothing to condense
+  if (sparse_newton_first(problem, options)) {  // condensed only if it has to take over
+    const SparseNewtonRun newton = solve_sparse_newton(problem, options);
+    if (newton.report.converged) return newton.report;
+    const CondensedInterface condensed(problem);
+    return after_sparse_newton(newton, attempt(problem, condensed, options));
+  }
   const CondensedInterface condensed(problem);
   return solve_fast(problem, condensed, options);
 }

@@ -39,23 +39,6 @@ constexpr int max_refinements = 6;  // intermediate springs inserted between the
 constexpr int anderson_memory = 5;
 constexpr int unlimited_solves = std::numeric_limits<int>::max();
 
-// The adherents' nodal stiffness along the interfaces (median, daN/mm): the spring's scale.
-double adherent_stiffness(const ContactProblem& problem) {
-  const LinearSystem& system = problem.system();
-  std::vector<double> k;
-  for (int n = 0; n < problem.num_nodes(); ++n)
-    for (int dof : {problem.node(n).plus_dof_x, problem.node(n).minus_dof_x}) {
-      if (dof < 0) continue;
-      const int free = system.free_index(dof);
-      if (free >= 0 && !system.floating(free)) k.push_back(system.K().coeff(free, free));
-    }
-  if (k.empty()) {  // only floating bodies touch the interfaces: their own stiffness
-    for (int i = 0; i < system.num_free(); ++i) k.push_back(system.K().coeff(i, i));
-  }
-  std::nth_element(k.begin(), k.begin() + k.size() / 2, k.end());
-  return k[k.size() / 2];
-}
-
 // Keeps the best iterate met, judged on the true SPEC residual.
 class BestIterate {
  public:

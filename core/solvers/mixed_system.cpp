@@ -1,6 +1,7 @@
 #include "core/solvers/mixed_system.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace thinlayer {
 
@@ -53,6 +54,7 @@ MixedSystem::MixedSystem(const ContactProblem& problem) : problem_(problem) {
       if (nodal_y[it.row()] >= 0 && nodal_y[it.col()] >= 0) k.emplace_back(nodal_y[it.row()], nodal_y[it.col()], it.value());
   for (const FloatingBand& band : bands) {
     const BandLayout& L = band.layout;
+    layouts_.push_back(L);
     const int offset = ny_;
     bands_.emplace_back(offset, L.size());
     for (int i = 0; i < L.columns; ++i)
@@ -72,6 +74,7 @@ MixedSystem::MixedSystem(const ContactProblem& problem) : problem_(problem) {
   P_.setFromTriplets(p.begin(), p.end());
   F_y_ = Eigen::Map<const Eigen::VectorXd>(F.data(), static_cast<Eigen::Index>(F.size()));
   const Eigen::SparseMatrix<double> B = problem.B() * P_;  // 2m × ny
+  B_y_ = B;
 
   // The pattern: K, −Bᵀ, and every entry a status row may need (B's row, the diagonal, the slide
   // coupling of the tangential row to r_N).
@@ -110,6 +113,10 @@ void MixedSystem::fill(const std::vector<Active>& statuses, Eigen::VectorXd& rhs
       if (c == 0 ? jumps[node].first : jumps[node].second) rhs[ny_ + 2 * node + c] = -problem_.jump_offset()[2 * node + c];
   }
   double* values = A_.valuePtr();
+  for (const Spring& s : springs_) {
+    values[s.position] = s.base + s.rho;
+    rhs[s.y] += s.rho * s.anchor;
+  }
   for (const StatusEntry& e : status_entries_) {
     const int node = e.row / 2, c = e.row % 2;
     const bool jump = c == 0 ? jumps[node].first : jumps[node].second;
@@ -133,6 +140,43 @@ void MixedSystem::fill(const std::vector<Active>& statuses, Eigen::VectorXd& rhs
   }
 }
 
+int MixedSystem::band_translation(int band, int column, int component) const {
+  return bands_.at(band).first + layouts_.at(band).t(column) + component;
+}
+
+void MixedSystem::set_springs(const std::vector<int>& y_index, const Eigen::VectorXd& rho,
+                              const Eigen::VectorXd& anchor) {
+  clear_springs();
+  for (size_t j = 0; j < y_index.size(); ++j) {
+    const int y = y_index[j];
+    int position = -1;  // the diagonal entry of column y (K's pattern holds every diagonal)
+    for (int q = A_.outerIndexPtr()[y]; q < A_.outerIndexPtr()[y + 1]; ++q)
+      if (A_.innerIndexPtr()[q] == y) position = q;
+    if (position < 0) throw std::logic_error("MixedSystem::set_springs: no diagonal entry at that unknown");
+    springs_.push_back({position, y, A_.valuePtr()[position], rho[j], anchor[j]});
+    A_.valuePtr()[position] += rho[j];
+  }
+}
+
+Eigen::VectorXd MixedSystem::row_stiffness() const {
+  Eigen::VectorXd diagonal = A_.diagonal().head(ny_);  // K's, springs included (they live in A)
+  Eigen::VectorXd kappa(B_y_.rows());
+  for (int row = 0; row < B_y_.rows(); ++row) {
+    double compliance = 0;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(B_y_, row); it; ++it)
+      compliance += it.value() * it.value() / diagonal[it.col()];
+    const double C = problem_.compliance()[row];
+    if (std::isfinite(C)) compliance += C;
+    kappa[row] = compliance > 0 ? 1.0 / compliance : 0.0;
+  }
+  return kappa;
+}
+
+void MixedSystem::clear_springs() {
+  for (const Spring& s : springs_) A_.valuePtr()[s.position] = s.base;
+  springs_.clear();
+}
+
 MixedSystem::Answer MixedSystem::solve(const std::vector<Active>& statuses) {
   Eigen::VectorXd rhs;
   fill(statuses, rhs);
@@ -142,6 +186,7 @@ MixedSystem::Answer MixedSystem::solve(const std::vector<Active>& statuses) {
   const Eigen::VectorXd x = lu_.solve(rhs);
   const Eigen::VectorXd y = x.head(ny_);
   answer.u = P_ * y;
+  answer.y = y;
   answer.r = x.tail(2 * problem_.num_nodes());
   for (const auto& [offset, size] : bands_) answer.band_z.push_back(y.segment(offset, size));
   return answer;

@@ -29,12 +29,32 @@ class MixedSystem {
     Eigen::VectorXd u;                  // free DOFs, mm
     Eigen::VectorXd r;                  // interface forces (r_N, r_T) per node, daN
     std::vector<Eigen::VectorXd> band_z;  // each layer band in its column basis
+    Eigen::VectorXd y;                  // the system's own unknowns (y above)
     bool singular = false;              // the statuses leave a body free (factorisation failed)
     double rcond = 0;                   // the LU's reciprocal condition estimate
   };
   // One sparse LU with these statuses (one per node of the problem, as the active-set methods
   // name them).
   Answer solve(const std::vector<Active>& statuses);
+
+  // The unknowns y of the system: each free DOF outside a layer band nodally, then each band in
+  // its column basis. The index in y of band b's column-i translation, component c (0: x, 1: y).
+  int band_translation(int band, int column, int component) const;
+  int num_bands() const { return static_cast<int>(bands_.size()); }
+  int band_offset(int band) const { return bands_.at(band).first; }
+  // The jumps' rows in y (2m × ny): jumps = B_y y + g_D.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& B_y() const { return B_y_; }
+  // A proximal spring on chosen unknowns of y: ρ_j (daN/mm) added to K's diagonal at y_j, pulling it
+  // towards anchor_j (mm). It selects one answer where the problem leaves a film's position free
+  // (SPEC §1.5, "Non-unique layers"); clear_springs() returns to the true problem.
+  void set_springs(const std::vector<int>& y_index, const Eigen::VectorXd& rho, const Eigen::VectorXd& anchor);
+  void clear_springs();
+  // Each interface row's stiffness as its unknowns see it with everything else held (daN/mm):
+  // 1 / (Σ_j b_ij² / A_jj + C_i) over the row's coefficients b_i in y, springs included — the
+  // Jacobi estimate of 1 / W̃_ii, the row's diagonal of the layer's dual operator, without forming
+  // it. A film's translation held only by its membrane and a spring ρ gives κ_i ≈ ρ: its statuses
+  // follow its forces, not its jumps.
+  Eigen::VectorXd row_stiffness() const;
 
  private:
   // One entry of a status row: where its value lives in A, and what it is.
@@ -53,7 +73,16 @@ class MixedSystem {
   int ny_ = 0;
   Eigen::VectorXd F_y_;
   Eigen::SparseMatrix<double> A_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> B_y_;  // the jump rows in y: 2m × ny
   std::vector<StatusEntry> status_entries_;
+  struct Spring {
+    int position;   // index into A's values (a diagonal entry of the K block)
+    int y;
+    double base;    // K's own value there
+    double rho, anchor;
+  };
+  std::vector<Spring> springs_;
+  std::vector<BandLayout> layouts_;
   SparseLU lu_;
 };
 

@@ -28,6 +28,9 @@ const char* to_string(StopCause cause);
 
 struct SolveReport {
   std::string solver;           // "fast" | "relaxation"
+  // Which of the fast solver's methods gave the answer: "bonded solve", "sparse Newton",
+  // "condensed active set", "floating-layer ladder"; "A after B" where B stopped and A took over.
+  std::string method;
   Eigen::VectorXd u;            // free DOFs, mm
   Eigen::VectorXd r;            // interface forces (r_N, r_T) per node, daN per unit thickness
   Eigen::VectorXd w;            // fast solver: the floating bodies' interface DOFs, mm (empty if none)
@@ -72,6 +75,9 @@ struct SolverOptions {
   // each solve warm started from the one before; the scene itself (t = 1) comes last and alone
   // decides convergence (core/solvers/friction_path.h). Empty (the default): none.
   std::vector<double> friction_path;
+  // Fast solver only: a body held by contact and friction alone and no layer band takes the sparse
+  // Newton first (core/solvers/sparse_newton.h). Off only to measure the condensed path against it.
+  bool sparse_newton = true;
 };
 
 }  // namespace thinlayer

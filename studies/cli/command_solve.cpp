@@ -256,6 +256,7 @@ std::string summary_line(const SolveInput& in, const SceneRecord& record, const 
       {"mode", in.mode},
       {"law_case", in.law_case},
       {"solver", report.solver},
+      {"solver_method", report.method},
       {"converged", report.converged},
       {"stop_cause", to_string(report.stop_cause)},
       {"iterations", report.iterations},

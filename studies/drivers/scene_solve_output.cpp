@@ -105,6 +105,7 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
       {"law_case", record.text.at("law_case")},
       {"units", bulk.spec().units.name()},
       {"solver", report.solver},
+      {"solver_method", report.method},
       {"converged", report.converged},
       {"stop_cause", to_string(report.stop_cause)},
       {"iterations", report.iterations},
