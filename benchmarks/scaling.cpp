@@ -6,6 +6,7 @@
 //
 //   build/thinlayer_scaling --joint cases/double_lap/double_lap.json --sizes 0.25,0.125,0.0625
 //   build/thinlayer_scaling --dovetail d:1e-3 --sizes 0.05,0.025,0.0125,0.00625
+//   build/thinlayer_scaling --limit cases/friction_lap/friction_lap.json --sizes 0.25,0.1,0.05 --before 1
 //
 // --sizes is the element size along the bondline (mm for a joint, mesh_size's "interface", the
 // far size kept in the file's proportion; the dovetail's h_interface, h_far 0.1). Each of the
@@ -135,6 +136,65 @@ Level joint_level(const std::string& path, double h, int timeout_s) {
   return level;
 }
 
+double growth_exponent(const std::vector<double>& n, const std::vector<double>& t);
+
+// Limit mode only (a joint with a body held by its bondlines alone): the sparse Newton (the
+// default), the condensed path it replaced (SolverOptions::sparse_newton off: "before"), and one
+// linear solve of the limit mesh with every bondline node pair tied.
+struct LimitLevel {
+  Measured bonded, limit, before;
+};
+
+LimitLevel limit_level(const std::string& path, double h, int timeout_s, bool before) {
+  LimitLevel level;
+  auto limit_with = [&](bool sparse_newton) {
+    return in_child([&] {
+      SceneFileBulk bulk(joint_at(path, h));
+      SolverOptions options;
+      options.sparse_newton = sparse_newton;
+      const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, options);
+      return line_of(setup_and_solve(s.record, s.report), &s.report, &s.record);
+    }, timeout_s);
+  };
+  level.limit = limit_with(true);
+  if (before) level.before = limit_with(false);
+  level.bonded = in_child([&] {
+    const SceneFileBulk bulk(joint_at(path, h));
+    const ContactProblem problem(bulk.system(), bulk.limit_interfaces(0));
+    return line_of(bonded_solve_seconds(problem), nullptr, nullptr);
+  }, timeout_s);
+  return level;
+}
+
+int run_limit(const std::string& joint, const std::vector<double>& sizes, int timeout_s, bool before) {
+  std::printf("%s: limit mode (sparse Newton) against one bonded linear solve of the same mesh%s\n", joint.c_str(),
+              before ? " and the condensed path (before)" : "");
+  std::printf("%9s %8s %6s | %9s %8s | %9s %8s %6s %9s %-10s | %9s %6s %-10s | %8s\n", "h", "nodes", "n_S", "bonded_s",
+              "MB", "limit_s", "MB", "steps", "residual", "stop", "before_s", "steps", "stop", "t/bond");
+  std::vector<double> n_S, t_bonded, t_limit;
+  bool all_converged = true;
+  for (double h : sizes) {
+    const LimitLevel l = limit_level(joint, h, timeout_s, before);
+    std::printf("%9g %8d %6d | %9.4f %8.0f | %9.4f %8.0f %6d %9.2e %-10s | %9.4f %6d %-10s | %8.1f\n", h, l.limit.nodes,
+                l.limit.interface_nodes, l.bonded.seconds, l.bonded.megabytes, l.limit.seconds, l.limit.megabytes,
+                l.limit.steps, l.limit.residual, l.limit.stop_cause.c_str(), l.before.seconds, l.before.steps,
+                l.before.stop_cause.c_str(), l.limit.seconds / l.bonded.seconds);
+    std::fflush(stdout);
+    all_converged = all_converged && l.limit.stop_cause == "converged";
+    if (!l.limit.finished || !l.bonded.finished) {
+      std::printf("(a run of this level did not finish within %d s: the finer levels are skipped)\n", timeout_s);
+      all_converged = false;
+      break;
+    }
+    n_S.push_back(l.limit.interface_nodes);
+    t_bonded.push_back(l.bonded.seconds);
+    t_limit.push_back(l.limit.seconds);
+  }
+  std::printf("growth exponent of time in n_S (log-log least squares, %zu levels): limit %.2f, bonded %.2f\n",
+              n_S.size(), growth_exponent(n_S, t_limit), growth_exponent(n_S, t_bonded));
+  return all_converged ? 0 : 1;
+}
+
 Level dovetail_level(char law_case, double eps, double h, int timeout_s) {
   const dovetail::MeshOptions mesh{h, std::max(h, 0.1), 2};
   Level level;
@@ -182,21 +242,30 @@ std::vector<double> parse_list(const std::string& text) {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: thinlayer_scaling (--joint FILE.json | --dovetail CASE:EPS) --sizes H1,H2,... [--timeout S]\n");
+               "usage: thinlayer_scaling (--joint FILE.json | --dovetail CASE:EPS) --sizes H1,H2,... [--timeout S]\n"
+               "       thinlayer_scaling --limit FILE.json --sizes H1,H2,... [--before 1] [--timeout S]\n");
   return 2;
 }
 
 int run(int argc, char** argv) {
-  std::string joint, dovetail_scene;
+  std::string joint, dovetail_scene, limit_joint;
   std::vector<double> sizes;
   int timeout_s = 600;
+  bool before = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--joint") joint = value;
     else if (key == "--dovetail") dovetail_scene = value;
     else if (key == "--sizes") sizes = parse_list(value);
     else if (key == "--timeout") timeout_s = std::stoi(value);
+    else if (key == "--limit") limit_joint = value;
+    else if (key == "--before") before = value == "1";
     else return usage();
+  }
+  if (!limit_joint.empty()) {
+    if (argc % 2 == 0 || sizes.empty()) return usage();
+    use_one_blas_thread();
+    return run_limit(limit_joint, sizes, timeout_s, before);
   }
   if (argc % 2 == 0 || sizes.empty() || joint.empty() == dovetail_scene.empty()) return usage();
   char law_case = 'd';
