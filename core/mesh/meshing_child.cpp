@@ -57,10 +57,22 @@ void write_all(int fd, const char* data, std::size_t size) {
 }
 
 std::string frame(char type, const std::string& payload) {
-  std::string f(1, type);
   const std::uint64_t size = payload.size();
+  std::string f;
+  f.reserve(frame_header + payload.size());
+  f.push_back(type);
   f.append(reinterpret_cast<const char*>(&size), sizeof size);
-  return f + payload;
+  f.append(payload);
+  return f;
+}
+
+// An error's payload: 'I' (about the input) or 'G' (anything else), then the message.
+std::string error_payload(bool input, const std::string& message) {
+  std::string p;
+  p.reserve(1 + message.size());
+  p.push_back(input ? 'I' : 'G');
+  p.append(message);
+  return p;
 }
 
 void send(char type, const std::string& payload) {
@@ -82,7 +94,7 @@ std::string memory_limit_text() {
 }
 
 [[noreturn]] void answer_error(bool input, const std::string& message) {
-  send('E', std::string(1, input ? 'I' : 'G') + message);
+  send('E', error_payload(input, message));
   ::_exit(70);
 }
 
@@ -306,7 +318,7 @@ void run_bounded(const std::string& phase, long long memory_bytes, unsigned seco
                  const std::function<void()>& step) {
   if (answer_fd < 0) return step();
   meshing_phase(phase);
-  const std::string alarm_answer = frame('E', "I" + why.substr(0, sizeof alarm_frame - frame_header - 1));
+  const std::string alarm_answer = frame('E', error_payload(true, why.substr(0, sizeof alarm_frame - frame_header - 1)));
   std::memcpy(alarm_frame, alarm_answer.data(), alarm_answer.size());
   alarm_frame_size = alarm_answer.size();
   bounded_why = why;
