@@ -360,6 +360,10 @@ def outputs(s):
     case("study --out DIR whose bondline_fields.csv is a link to results.h5",
          ["study", "validity", "--scene", "lap_joint.json", "--out", "S"], 2,
          "results.h5 and bondline_fields.csv name the same file", f, 10)
+    os.makedirs(s.path("V"))
+    os.symlink("results.h5", s.path("V/summary.json"))  # dangling
+    case("verify --out DIR whose summary.json is a link to results.h5", ["verify", "--out", "V"], 2,
+         "results.h5 and summary.json name the same file", f, 10)
     for signum in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
         new = s.path("NEW")
         p = subprocess.Popen([THINLAYER, "study", "table3", "--quick", "--quiet", "--out", "NEW"], cwd=f, env=ENV,

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "core/io/h5_writer.h"
+#include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 #include "studies/cli/command_scene.h"
 #include "studies/drivers/scene_file_study.h"
@@ -402,6 +403,9 @@ int command_verify(const CLI::App& command, const StudyArgs& a) {
     return 2;
   }
   try {
+    // Its two files distinct after every link (a dangling summary.json -> results.h5 included).
+    check_distinct_outputs({{"results.h5", in.out_dir + "/results.h5"}, {"summary.json", in.out_dir + "/summary.json"}},
+                           {});
     auto out = open_results(in.out_dir, {{}, in.force});
     const std::string summary = in.out_dir + "/summary.json";
     check_replaceable(summary, OutputKind::Summary, {}, in.force);  // before the studies, not after
