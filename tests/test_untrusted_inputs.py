@@ -481,6 +481,11 @@ def messages(s):
         case(f".msh: {label}", ["solve", "--scene", s.write(name + ".json", dict(TWO_QUADS, mesh=name + ".msh"))], 2,
              f"{name}.msh: node 1 at (", f, 10)
         check(f".msh: {label}: said", words in table[-1][2], table[-1][2])
+    # A damaged .msh is read by gmsh in the child: what it does there is a message.
+    s.write("huge_count.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 999999999999 1 999999999999\n"
+            "1 1 0 999999999999\n1\n")
+    case("a .msh announcing 1e12 nodes", ["solve", "--scene", s.write("huge_count.json", dict(TWO_QUADS, mesh="huge_count.msh"))],
+         2, "huge_count.msh: gmsh ran out of its memory limit (8 GiB) while reading the mesh", f, 30)
     s.write("tilted.msh", msh(z=0.5))
     case("a .msh with z != 0", ["solve", "--scene", s.write("tilted.json", dict(TWO_QUADS, mesh="tilted.msh"))], 2,
          "tilted.msh: node 1 at (0, 0, 0.5) is off the plane z = 0", f, 10)
