@@ -154,7 +154,7 @@ class SourceReader {
     const bool script = kind == SceneSource::Script || kind == SceneSource::List;
     const std::size_t bound = script ? max_script_bytes - script_bytes_ : kind == SceneSource::Mesh ? max_mesh_bytes : max_shape_bytes;
     auto too_large = [&] {
-      return InputError(prefix + path + ": " +
+      return InputError(prefix +  // it names the file
                         (script ? "the scene's scripts together are larger than " + std::to_string(max_script_bytes >> 20) +
                                       " MiB (a geometry is small: the lap joint's is 2 KB)"
                                 : "larger than " + std::to_string(bound >> 20) + " MiB"));
