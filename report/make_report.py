@@ -1,253 +1,120 @@
 #!/usr/bin/python3
 """The thinlayer verification report: an HTML page with figures, read only from a results file.
 
-    /usr/bin/python3 report/make_report.py RESULTS.h5 OUT_DIR
+    /usr/bin/python3 report/make_report.py RESULTS.h5 OUT_DIR [--time-limit SECONDS]
 
-writes OUT_DIR/index.html and OUT_DIR/figures/*.png, and nothing else (SPEC §4, "Nothing
-lost"): every other file in OUT_DIR -- its input, summary.json, the user's notes -- is left as
-it was. The report is built in a hidden temporary folder inside OUT_DIR; once complete, its
-figures and index.html are renamed into place (index.html last, through a symbolic link if it
-is one), then the previous report's figures that the new one does not have are removed. The
-previous report's files are known from its index.html, which must be one this script wrote
-(its title); a file in the way that the report did not write is refused, not replaced.
-A missing or unreadable file, a file that is not a thinlayer results file (foreign), or an
-older layout: one line on stderr, exit status 2, nothing written. SIGTERM and SIGINT remove
-the half-built report. (Run with Debian's /usr/bin/python3, which sees python3-matplotlib
-and python3-h5py.)
+writes OUT_DIR/index.html and OUT_DIR/figures/*.png, and nothing else (build_report.py says how).
+
+A results file handed to the report is untrusted input (SPEC §4): a damaged one has crashed
+HDF5 inside h5py (a signal, which no Python code can catch) or kept it looping. So this command
+reads nothing itself: it runs build_report.py in a process of its own and waits for it, at most
+--time-limit seconds (default 1800: the verification report takes about a minute). When that
+process ends by a crash or runs out of time, this one says so in one line, removes the
+half-built report it left (its `.report-building-<pid>-*` folder, and OUT_DIR if the run made it
+and it holds nothing else), and exits with status 2. On SIGINT, SIGTERM or SIGHUP it ends that
+process at once (SIGKILL), removes the same, and dies of the same signal.
 """
 
 import os
-import re
 import shutil
 import signal
+import subprocess
 import sys
-import time
-import traceback
 
-# The helper modules sit beside this script, whatever the working directory; no __pycache__
-# is left in the source tree.
-sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-
-import parallel_sections  # noqa: E402
-import section_bar_profiles  # noqa: E402
-import section_controls  # noqa: E402
-import section_convergence  # noqa: E402
-import section_convergence_rates  # noqa: E402
-import section_film  # noqa: E402
-import section_header  # noqa: E402
-import section_joint  # noqa: E402
-import section_layer_stiffness  # noqa: E402
-import section_scene_files  # noqa: E402
-import section_table3  # noqa: E402
-import section_tables12  # noqa: E402
-import section_stress  # noqa: E402
-import section_timing  # noqa: E402
-import section_validity  # noqa: E402
-from checks import load_checks  # noqa: E402
-from context import Context  # noqa: E402
-from html_parts import page, section  # noqa: E402
-from plotting import FigureWriter  # noqa: E402
-from results_file import ReportError, open_results  # noqa: E402
-from scenes import index_scenes  # noqa: E402
-
-USAGE = "usage: make_report.py RESULTS.h5 OUT_DIR"
+BUILDER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "build_report.py")
+USAGE = "usage: make_report.py RESULTS.h5 OUT_DIR [--time-limit SECONDS]"
 EXIT_BAD_INPUT = 2
+DEFAULT_TIME_LIMIT_S = 1800.0
 
 
-def paper_tables(ctx):
-    """Section 2 gathers the three tables of the paper."""
-    return section("tables", "2. The paper's tables", section_tables12.render(ctx) + "\n" + section_table3.render(ctx))
+def time_limit(argv):
+    """(the arguments for the builder, the time limit in seconds): --time-limit S is ours."""
+    args, limit = [], DEFAULT_TIME_LIMIT_S
+    k = 0
+    while k < len(argv):
+        if argv[k] == "--time-limit":
+            if k + 1 == len(argv):
+                raise ValueError("--time-limit needs a number of seconds")
+            try:
+                limit = float(argv[k + 1])
+            except ValueError:
+                raise ValueError(f"--time-limit: not a number: {argv[k + 1]!r}") from None
+            if not 0 < limit <= 1e6:
+                raise ValueError(f"--time-limit must be in (0, 1e6] seconds, got {argv[k + 1]}")
+            k += 2
+            continue
+        args.append(argv[k])
+        k += 1
+    return args, limit
 
 
-# (anchor, navigation label, renderer): the order of the page.
-SECTIONS = (
-    ("summary", "Summary", section_header.render),
-    ("tables", "Tables 1–3", paper_tables),
-    ("bar", "Figs. 13–14", section_bar_profiles.render),
-    ("stiffness", "Figs. 6–7", section_layer_stiffness.render),
-    ("convergence", "Convergence", section_convergence.render),
-    ("rates", "Rates", section_convergence_rates.render),
-    ("controls", "Controls", section_controls.render),
-    ("validity", "Validity", section_validity.render),
-    ("timing", "Run time", section_timing.render),
-    ("stress", "Stress tests", section_stress.render),
-    ("film", "Film", section_film.render),
-    ("scenes", "Your own joint", section_scene_files.render),
-)
-
-
-# Rendered by a second process, beside the others (parallel_sections.py): the slowest section.
-IN_HELPER = {"convergence"}
-
-# A file whose only study is a scene-file study (`study validity --scene`) gets the report of that
-# joint instead of the verification report's empty sections (SPEC §5).
-JOINT_SECTIONS = (
-    ("summary", "Summary", section_header.render),
-    ("joint", "The joint", section_joint.render),
-    ("film", "Film", section_film.render),
-)
-
-
-def is_joint_file(f):
-    studies = f.get("studies")
-    return studies is not None and set(studies.keys()) == {"scene"}
-
-
-class SectionError(Exception):
-    """A section could not be built from the file (a malformed or incomplete group)."""
-
-
-def write_report(f, results_path, out_dir):
-    """Write index.html and figures/ into out_dir (an empty directory)."""
-    def build(label, step):
+def remove_leftovers(child_pid, out_dir, made_out_dir):
+    """What a builder that could not clean up left: its half-built report, and OUT_DIR if this run
+    made it and nothing else is in it."""
+    if not out_dir or not os.path.isdir(out_dir):
+        return
+    prefix = f".report-building-{child_pid}-"
+    for name in os.listdir(out_dir):
+        if name.startswith(prefix):
+            shutil.rmtree(os.path.join(out_dir, name), ignore_errors=True)
+    if made_out_dir:
         try:
-            return step()
-        except Exception as e:  # name the part: the reviewer must know what broke
-            if os.environ.get("THINLAYER_REPORT_DEBUG"):
-                traceback.print_exc()
-            raise SectionError(f"{label}: {type(e).__name__}: {e}") from e
-
-    ctx = build("reading /scenes and /checks",
-                lambda: Context(path=results_path, f=f, scenes=index_scenes(f), checks=load_checks(f),
-                                figures=FigureWriter(out_dir)))
-    joint = is_joint_file(f)
-    sections = JOINT_SECTIONS if joint else SECTIONS
-    helper, answer = parallel_sections.start(
-        results_path, out_dir, [(label, render) for anchor, label, render in sections if anchor in IN_HELPER])
-    try:
-        mine = {anchor: build(f"section '{label}'", lambda: render(ctx))
-                for anchor, label, render in sections if anchor not in IN_HELPER}
-        helper_parts, error = parallel_sections.finish(helper, answer)
-    finally:
-        parallel_sections.stop(helper)
-    if error:
-        raise SectionError(f"section '{error[0]}': {error[1]}")
-    from_helper = dict(zip([anchor for anchor, _, _ in sections if anchor in IN_HELPER], helper_parts))
-    parts = [mine[anchor] if anchor in mine else from_helper[anchor] for anchor, _, _ in sections]
-    title = f"{JOINT_TITLE}: {', '.join(sorted(f['studies']['scene']))}" if joint else TITLE
-    html = page(title, [(a, label) for a, label, _ in sections], "\n".join(parts))
-    with open(os.path.join(out_dir, "index.html"), "w", encoding="utf-8") as out:
-        out.write(html)
-
-
-TITLE = "thinlayer verification report"
-JOINT_TITLE = "thinlayer joint report"
-
-
-def previous_figures(index_path):
-    """The figures an earlier report in this folder wrote (named in its index.html), or
-    None when there is no earlier report. A file there that this script did not write is
-    refused."""
-    if not os.path.lexists(index_path):
-        return None
-    try:
-        with open(index_path, encoding="utf-8") as page_file:
-            html = page_file.read()
-    except (OSError, UnicodeDecodeError) as e:
-        raise ReportError(f"{index_path}: exists and is not a report this script wrote ({e}); "
-                          f"move it or choose another folder") from None
-    if f"<title>{TITLE}</title>" not in html and not re.search(f"<title>{JOINT_TITLE}: [^<]*</title>", html):
-        raise ReportError(f"{index_path}: exists and is not a report this script wrote; "
-                          f"move it or choose another folder")
-    return set(re.findall(r'<img src="figures/([^"/]+\.png)"', html))
-
-
-def check_input_is_safe(results_path, out_dir):
-    """The report never writes over its own input."""
-    source = os.path.realpath(results_path)
-    if source == os.path.realpath(os.path.join(out_dir, "index.html")) or \
-            os.path.dirname(source) == os.path.realpath(os.path.join(out_dir, "figures")):
-        raise ReportError(f"{results_path}: the report would write over its own input; "
-                          f"choose another OUT_DIR")
-
-
-def install(built, out_dir, previous):
-    """Move the finished report `built` into out_dir: figures, then index.html."""
-    figures = os.path.join(out_dir, "figures")
-    new = sorted(os.listdir(os.path.join(built, "figures")))
-    if os.path.lexists(figures) and not os.path.isdir(figures):
-        raise ReportError(f"{figures}: exists and is not a directory")
-    for name in new:
-        if os.path.lexists(os.path.join(figures, name)) and name not in (previous or set()):
-            raise ReportError(f"{os.path.join(figures, name)}: exists and was not written by this report; "
-                              f"move it or choose another folder")
-    os.makedirs(figures, exist_ok=True)
-    for name in new:
-        os.replace(os.path.join(built, "figures", name), os.path.join(figures, name))
-    os.replace(os.path.join(built, "index.html"), os.path.realpath(os.path.join(out_dir, "index.html")))
-    for name in sorted((previous or set()) - set(new)):  # the earlier report's, no longer shown
-        try:
-            os.remove(os.path.join(figures, name))
-        except FileNotFoundError:
+            os.rmdir(out_dir)  # only if empty: never a file of the user's
+        except OSError:
             pass
 
 
-def make_report(results_path, out_dir):
-    out_dir = os.path.abspath(out_dir)
-    if os.path.lexists(out_dir) and not os.path.isdir(out_dir):
-        raise ReportError(f"{out_dir}: exists and is not a directory")
-    with open_results(results_path) as f:  # refuses a bad file before anything is written
-        check_input_is_safe(results_path, out_dir)
-        previous = previous_figures(os.path.join(out_dir, "index.html"))
-        created = not os.path.lexists(out_dir)
-        # The half-built report's name is known before it exists, so that a signal arriving just
-        # after it is made (the hostile matrix kills the report as soon as it appears) finds it.
-        building = os.path.join(out_dir, f".report-building-{os.getpid()}-{time.monotonic_ns()}")
-        try:
-            try:
-                os.makedirs(out_dir, exist_ok=True)
-                os.mkdir(building)
-            except OSError as e:
-                raise ReportError(f"cannot write in {out_dir}: {e.strerror or e}") from None
-            write_report(f, results_path, building)
-            install(building, out_dir, previous)
-        except BaseException:
-            shutil.rmtree(building, ignore_errors=True)
-            if created:
-                shutil.rmtree(out_dir, ignore_errors=True)  # it held nothing but this report
-            raise
-        shutil.rmtree(building, ignore_errors=True)
-
-
-class Interrupted(BaseException):
-    """SIGINT or SIGTERM, as an exception: the half-built report is removed on the way out."""
-
-    def __init__(self, signum):
-        super().__init__(f"signal {signum}")
-        self.signum = signum
-
-
-def stop_on_signal(signum, _frame):
-    raise Interrupted(signum)
-
-
 def main(argv):
-    if len(argv) == 2 and argv[1] in ("-h", "--help"):
-        print(USAGE + "\n" + __doc__)
-        return 0
-    if len(argv) != 3:
-        print(f"make_report: expected 2 arguments, got {len(argv) - 1}; {USAGE}", file=sys.stderr)
-        return EXIT_BAD_INPUT
-    start = time.monotonic()
-    for signum in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(signum, stop_on_signal)
     try:
-        make_report(argv[1], argv[2])
-    except Interrupted as e:  # cleaned up; now die of the signal, as the caller expects
-        signal.signal(e.signum, signal.SIG_DFL)
-        os.kill(os.getpid(), e.signum)
-    except ReportError as e:
-        print(f"make_report: {e}", file=sys.stderr)
+        args, limit = time_limit(argv[1:])
+    except ValueError as e:
+        print(f"make_report: {e}; {USAGE}", file=sys.stderr)
         return EXIT_BAD_INPUT
-    except SectionError as e:
-        print(f"make_report: {argv[1]}: {e}", file=sys.stderr)
+    results = args[0] if args else ""
+    out_dir = os.path.abspath(args[1]) if len(args) == 2 and args[0] not in ("-h", "--help") else None
+    made_out_dir = out_dir is not None and not os.path.lexists(out_dir)
+    # Its own process group: whatever it starts (the report's helper process) can be ended with it.
+    child = subprocess.Popen([sys.executable, BUILDER, *args], process_group=0)
+    interrupted = []
+
+    # The builder (and its helper) end at once, wherever they are: a signal turned into an exception
+    # inside matplotlib left it half-way and came out as a section's AttributeError. What they left
+    # is removed here, then this process dies of the same signal.
+    def stop(signum, _frame):
+        interrupted.append(signum)
+        try:
+            os.killpg(child.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+
+    for signum in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        signal.signal(signum, stop)
+    try:
+        status = child.wait(timeout=limit)
+        timed_out = False
+    except subprocess.TimeoutExpired:
+        timed_out = True
+        status = None
+    if timed_out or (status is not None and status < 0):
+        try:
+            os.killpg(child.pid, signal.SIGKILL)  # the builder and any helper it left
+        except ProcessLookupError:
+            pass
+        child.wait()
+        remove_leftovers(child.pid, out_dir, made_out_dir)
+    if interrupted:  # die of the same signal, as the caller expects
+        signal.signal(interrupted[0], signal.SIG_DFL)
+        os.kill(os.getpid(), interrupted[0])
+    if timed_out:
+        print(f"make_report: {results}: the report did not finish within {limit:g} s (--time-limit): a damaged "
+              f"results file? Nothing written", file=sys.stderr)
         return EXIT_BAD_INPUT
-    except OSError as e:
-        print(f"make_report: {e}", file=sys.stderr)
+    if status < 0:
+        name = signal.Signals(-status).name if -status in signal.valid_signals() else f"signal {-status}"
+        print(f"make_report: {results}: reading it crashed the report ({name}): a damaged results file? "
+              f"Nothing written", file=sys.stderr)
         return EXIT_BAD_INPUT
-    print(f"wrote {os.path.join(argv[2], 'index.html')} in {time.monotonic() - start:.1f} s")
-    return 0
+    return status
 
 
 if __name__ == "__main__":

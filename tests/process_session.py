@@ -22,10 +22,11 @@ def session_processes(session):
     return alive
 
 
-def run_in_session(argv, cwd, timeout=120):
-    """Runs argv in its own session; returns the completed process and the session's survivors."""
+def run_in_session(argv, cwd, timeout=120, env=None, preexec=None):
+    """Runs argv in its own session (with `env`, and `preexec` run in the child before it starts);
+    returns the completed process and the session's survivors."""
     p = subprocess.Popen(argv, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                         start_new_session=True)
+                         start_new_session=True, env=env, preexec_fn=preexec)
     out, err = p.communicate(timeout=timeout)
     time.sleep(0.05)
     return subprocess.CompletedProcess(argv, p.returncode, out, err), session_processes(p.pid)

@@ -17,7 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* const keys[] = {"compiler", "eigen", "cholmod", "suitesparse", "gmsh", "hdf5", "build_type", "commit"};
+const char* const keys[] = {"compiler", "eigen",      "cholmod", "suitesparse",  "gmsh",
+                            "hdf5",     "build_type", "commit",  "gmsh_read_box"};
 
 // "3.4.0": digits separated by single dots, at least major.minor.
 bool looks_like_version(const std::string& v) {

@@ -1,38 +1,35 @@
-// The .geo scan (cases/scene/geo_scan.h): every statement of gmsh's language that runs,
-// writes, stops or meshes is refused with its file and line; geometry passes.
+// The .geo scan (cases/scene/geo_scan.h) and the scene's sources (cases/scene/scene_sources.h):
+// every statement of gmsh's language that runs, writes, stops or meshes is refused with its file
+// and line; thinlayer reads every file gmsh would and refuses what it cannot check.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "cases/scene/geo_scan.h"
 #include "cases/scene/json_positions.h"
+#include "cases/scene/scene_sources.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using thinlayer::GeoReference;
+using thinlayer::InputError;
+using thinlayer::SceneSources;
 
-struct GeoScan : ::testing::Test {
-  fs::path dir = fs::temp_directory_path() / ("thinlayer-geo-scan-" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(dir / "scene"); }
-  void TearDown() override { fs::remove_all(dir); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    std::ofstream(dir / name) << text;
-    return dir / name;
+// "" if the scan passes, else its message.
+std::string scan(const std::string& text) {
+  try {
+    thinlayer::scan_geo_text(text, "t.geo");
+  } catch (const InputError& e) {
+    return e.what();
   }
-  // "" if the scan passes, else its message.
-  std::string scan(const std::string& text) {
-    const fs::path geo = write("scene/t.geo", text);
-    try {
-      thinlayer::scan_geo(geo.string(), (dir / "scene").string());
-    } catch (const thinlayer::InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
-};
+  return "";
+}
 
 const char* const geometry =
     "SetFactory(\"Built-in\");\nh = 0.5; // the size\nPoint(1) = {0, 0, 0, h}; Point(2) = {1, 0, 0, h};\n"
@@ -40,9 +37,9 @@ const char* const geometry =
     "Geometry.Tolerance = 1e-9;\nTransfinite Curve{1} = 10;\nPhysical Curve(\"System\") = {1};\n"
     "Printf(\"length %g\", h);\n/* Save \"x.msh\"; System \"rm -rf /\"; */\nMacro M\n  y = 2;\nReturn\nCall M;\n";
 
-TEST_F(GeoScan, GeometryVariablesLoopsMacrosAndMeshOptionsPass) { EXPECT_EQ(scan(geometry), ""); }
+TEST(GeoScan, GeometryVariablesLoopsMacrosAndMeshOptionsPass) { EXPECT_EQ(scan(geometry), ""); }
 
-TEST_F(GeoScan, EveryStatementThatRunsWritesStopsOrMeshesIsRefusedWithItsLine) {
+TEST(GeoScan, EveryStatementThatRunsWritesStopsOrMeshesIsRefusedWithItsLine) {
   const std::pair<const char*, const char*> refused[] = {
       {"System \"touch pwned\";", "'System' runs a command"},
       {"SystemCall \"touch pwned\";", "'SystemCall' runs a command"},
@@ -65,37 +62,152 @@ TEST_F(GeoScan, EveryStatementThatRunsWritesStopsOrMeshesIsRefusedWithItsLine) {
       {"SetString(\"Solver.Executable0\", \"sh\");", "'SetString' sets ONELAB parameters"},
       {"S2N[\"System\"] \"touch pwned\";", "'S2N' builds a name at run time"},
       {"Include StrCat(\"a\", \".geo\");", "'Include' takes a file name in quotes"},
-      {"Include \"../outside.geo\";", "a file outside the scene's folder"},
-      {"Include \"/etc/passwd\";", "a file outside the scene's folder"},
-      {"Merge \"../outside.step\";", "a file outside the scene's folder"},
-      {"a() = ListFromFile(\"/etc/hostname\");", "a file outside the scene's folder"},
       {"If (0) Exit; EndIf", "'Exit'"},  // a branch never taken: still refused
+      // gmsh's lexer reads "1e5" as a number and "System" as the keyword after it.
+      {"x = 1e5System \"touch pwned\";", "'System' runs a command"},
+      {"x = 2.5e-3Exit;", "'Exit' ends the process"},
   };
   for (const auto& [statement, why] : refused) {
     SCOPED_TRACE(statement);
     const std::string message = scan(std::string(geometry) + statement + "\n");
-    EXPECT_NE(message.find((dir / "scene/t.geo").string() + ":18: "), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("t.geo:18: ", 0), 0u) << message;
     EXPECT_NE(message.find(why), std::string::npos) << message;
   }
 }
 
-TEST_F(GeoScan, IncludedScriptsAreScannedInTurn) {
-  write("scene/part.geo", "Point(1) = {0, 0, 0};\n\nSystem \"touch pwned\";\n");
-  write("scene/data.msh", "System \"not a script: a mesh\"\n");
-  EXPECT_EQ(scan("Merge \"data.msh\";\n"), "");
-  const std::string message = scan("Include \"part.geo\";\n");
-  EXPECT_NE(message.find("part.geo:3: 'System' runs a command"), std::string::npos) << message;
-  write("scene/loop.geo", "Include \"loop.geo\";\n");  // includes itself: scanned once
-  EXPECT_EQ(scan("Include \"loop.geo\";\n"), "");
-  // A symbolic link inside the folder to a file outside it is outside.
-  write("elsewhere.geo", "Point(1) = {0, 0, 0};\n");
-  fs::create_symlink(dir / "elsewhere.geo", dir / "scene/link.geo");
-  EXPECT_NE(scan("Include \"link.geo\";\n").find("outside the scene's folder"), std::string::npos);
+// What gmsh's lexer reads otherwise than a text editor shows: refused.
+TEST(GeoScan, ANulByteOrAStringGmshWouldCutIsRefused) {
+  EXPECT_NE(scan(std::string("x = 1;\n// a comment\0 System \"touch pwned\";\n", 40)).find("t.geo:2: a NUL byte"),
+            std::string::npos);
+  EXPECT_EQ(scan("s = \"" + std::string(thinlayer::geo_string_max, 'a') + "\";\n"), "");
+  EXPECT_NE(scan("s = \"" + std::string(thinlayer::geo_string_max + 1, 'a') + "\";\n")
+                .find("t.geo:1: a string of 1024 bytes: gmsh reads at most 1023"),
+            std::string::npos);
 }
 
-TEST_F(GeoScan, AnUnterminatedStringOrCommentIsRefused) {
+TEST(GeoScan, AnUnterminatedStringOrCommentIsRefused) {
   EXPECT_NE(scan("x = 1;\ny = \"open\n").find("t.geo:2: a string that never ends"), std::string::npos);
   EXPECT_NE(scan("/* open\n").find("t.geo:1: a comment that never ends"), std::string::npos);
+}
+
+TEST(GeoScan, TheFilesAScriptNamesAreReturned) {
+  const auto references = thinlayer::scan_geo_text(
+      "Include \"a.geo\";\nMerge \"m.msh\";\nv() = ListFromFile(\"l.txt\");\nShapeFromFile(\"s.brep\");\n", "t.geo");
+  ASSERT_EQ(references.size(), 4u);
+  EXPECT_EQ(references[0].kind, GeoReference::Include);
+  EXPECT_EQ(references[0].name, "a.geo");
+  EXPECT_EQ(references[1].kind, GeoReference::Merge);
+  EXPECT_EQ(references[1].line, 2);
+  EXPECT_EQ(references[2].kind, GeoReference::List);
+  EXPECT_EQ(references[3].kind, GeoReference::Shape);
+  EXPECT_EQ(references[3].name, "s.brep");
+}
+
+// A scene's folder of files, read as read_scene_sources reads them.
+struct SceneSourcesTest : ::testing::Test {
+  fs::path dir = fs::temp_directory_path() / ("thinlayer-sources-" + std::to_string(::getpid()));
+  void SetUp() override { fs::create_directories(dir / "scene"); }
+  void TearDown() override { fs::remove_all(dir); }
+
+  void write(const std::string& name, const std::string& text) {
+    fs::create_directories((dir / name).parent_path());
+    std::ofstream(dir / name, std::ios::binary) << text;
+  }
+  SceneSources read(const std::string& entry_text, bool mesh = false) {
+    write(mesh ? "scene/t.msh" : "scene/t.geo", entry_text);
+    return thinlayer::read_scene_sources((dir / "scene").string(), mesh ? "t.msh" : "t.geo", mesh, "s.json:3:5");
+  }
+  // "" if the sources are accepted, else the message.
+  std::string refusal(const std::string& entry_text, bool mesh = false) {
+    try {
+      read(entry_text, mesh);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+TEST_F(SceneSourcesTest, ExactlyTheFilesTheGeometryReadsNoOptFile) {
+  write("scene/t.geo.opt", "General.Terminal = 1;\n");  // gmsh merges it unasked; it is not staged
+  write("scene/part.geo", "y = 2;\n");
+  write("scene/sub/inner.geo", "z = 3;\nInclude \"../part.geo\";\n");
+  const SceneSources s = read("Include \"part.geo\";\nInclude \"sub/inner.geo\";\nInclude \"sub/../part.geo\";\n");
+  EXPECT_EQ(s.entry, "t.geo");
+  std::vector<std::string> staged;
+  for (const auto& f : s.files) staged.push_back(f.staged);
+  EXPECT_EQ(staged, (std::vector<std::string>{"t.geo", "part.geo", "sub/inner.geo"}));
+  EXPECT_EQ(s.folders, std::vector<std::string>{"sub"});
+  EXPECT_EQ(s.files[1].bytes, "y = 2;\n");
+  EXPECT_EQ(s.files[1].path, (dir / "scene/part.geo").string());
+}
+
+TEST_F(SceneSourcesTest, AnIncludedScriptIsScannedInTurn) {
+  write("scene/part.geo", "Point(1) = {0, 0, 0};\n\nSystem \"touch pwned\";\n");
+  const std::string m = refusal("Include \"part.geo\";\n");
+  EXPECT_NE(m.find("part.geo:3: 'System' runs a command"), std::string::npos) << m;
+}
+
+TEST_F(SceneSourcesTest, IncludeLoopsAreRefusedADiamondIsNot) {
+  write("scene/loop.geo", "Include \"t.geo\";\n");
+  EXPECT_NE(refusal("Include \"loop.geo\";\n").find("an include loop"), std::string::npos);
+  EXPECT_NE(refusal("Include \"t.geo\";\n").find("an include loop"), std::string::npos);
+  write("scene/a.geo", "Include \"d.geo\";\n");
+  write("scene/b.geo", "Include \"d.geo\";\n");
+  write("scene/d.geo", "x = 1;\n");
+  EXPECT_EQ(refusal("Include \"a.geo\";\nInclude \"b.geo\";\n"), "");
+}
+
+TEST_F(SceneSourcesTest, AMeshMustBeginWithMeshFormat) {
+  const std::string script = "System \"touch pwned\";\nSleep 1e7;\n";
+  EXPECT_NE(refusal(script, /*mesh=*/true).find("t.msh:1: a mesh file that does not begin with $MeshFormat"),
+            std::string::npos);
+  EXPECT_EQ(refusal("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n", /*mesh=*/true), "");
+  write("scene/data.msh", script);
+  EXPECT_NE(refusal("Merge \"data.msh\";\n").find("data.msh:1: a mesh file that does not begin with $MeshFormat"),
+            std::string::npos);
+}
+
+TEST_F(SceneSourcesTest, AMergeOfAnExtensionGmshReadsAnotherWayIsRefused) {
+  for (const char* name : {"x.Msh", "x.xao", "x.inp", "x.Step", "x.msh.gz", "x.pos", "x"}) {
+    SCOPED_TRACE(name);
+    write(std::string("scene/") + name, "$MeshFormat\n");
+    const std::string m = refusal(std::string("Merge \"") + name + "\";\n");
+    EXPECT_NE(m.find("t.geo:1: 'Merge' of \"" + std::string(name) + "\""), std::string::npos) << m;
+    EXPECT_NE(m.find("a reader thinlayer cannot check"), std::string::npos) << m;
+  }
+  write("scene/s.step", "not a STEP file\n");
+  EXPECT_NE(refusal("Merge \"s.step\";\n").find("s.step:1: not a STEP file"), std::string::npos);
+  write("scene/s.step", "ISO-10303-21;\nHEADER;\n");
+  EXPECT_EQ(refusal("Merge \"s.step\";\n"), "");
+}
+
+TEST_F(SceneSourcesTest, NamesGmshReadsOtherwiseAreRefused) {
+  write("scene/sub/inc.geo", "x = 1;\n");
+  write("outside.geo", "x = 1;\n");
+  EXPECT_NE(refusal("Include \"sub\\inc.geo\";\n").find("holding a backslash"), std::string::npos);
+  EXPECT_NE(refusal("Include \"/etc/passwd\";\n").find("an absolute file name"), std::string::npos);
+  EXPECT_NE(refusal("Include \"C:/x.geo\";\n").find("an absolute file name"), std::string::npos);
+  EXPECT_NE(refusal("Include \"../outside.geo\";\n").find("outside the scene's folder"), std::string::npos);
+  EXPECT_NE(refusal("Include \"sub/../../outside.geo\";\n").find("outside the scene's folder"), std::string::npos);
+  EXPECT_NE(refusal("Include \"\";\n").find("an empty file name"), std::string::npos);
+  EXPECT_NE(refusal("Include \"sub/\";\n").find("names a folder"), std::string::npos);
+  fs::create_symlink(dir / "outside.geo", dir / "scene/link.geo");
+  EXPECT_NE(refusal("Include \"link.geo\";\n").find("a link to a file outside the scene's folder"), std::string::npos);
+}
+
+TEST_F(SceneSourcesTest, WhatIsNoRegularFileIsRefusedAtOnce) {
+  ASSERT_EQ(::mkfifo((dir / "scene/fifo.geo").c_str(), 0600), 0);
+  EXPECT_NE(refusal("Include \"fifo.geo\";\n").find("is a FIFO"), std::string::npos);  // a read would wait for ever
+  EXPECT_NE(refusal("Merge \"fifo.geo\";\n").find("is a FIFO"), std::string::npos);
+  fs::create_directories(dir / "scene/folder.geo");
+  EXPECT_NE(refusal("Include \"folder.geo\";\n").find("is a folder"), std::string::npos);
+  EXPECT_NE(refusal("Include \"missing.geo\";\n").find("No such file"), std::string::npos);
+}
+
+TEST_F(SceneSourcesTest, ScriptsAreBounded) {
+  EXPECT_NE(refusal(std::string(thinlayer::max_script_bytes + 1, ';')).find("larger than 4 MiB"), std::string::npos);
+  EXPECT_NE(refusal("$MeshFormat\n").find("t.geo:1: a script that begins with '$'"), std::string::npos);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // what the child cannot do whatever a script asks of it.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -13,12 +14,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/mesh/mesh_bytes.h"
 #include "core/mesh/meshing_child.h"
+#include "core/mesh/read_box.h"
 
 namespace {
 
 using thinlayer::MeshingChildError;
 using thinlayer::MeshingChildLimits;
+using thinlayer::meshing_phase;
+using thinlayer::run_bounded;
 using thinlayer::run_in_meshing_child;
 
 namespace fs = std::filesystem;
@@ -81,6 +86,98 @@ TEST(MeshingChild, LimitsAreMessages) {
               std::vector<char> v(2LL << 30, 1);
               return std::string(v.data(), 1);
             }, limits).find("memory limit (1 GiB)"), std::string::npos);
+}
+
+TEST(MeshingChild, AFailureNamesThePhaseItEndedIn) {
+  EXPECT_EQ(failure([]() -> std::string {
+              meshing_phase("meshing");
+              std::raise(SIGSEGV);
+              return "";
+            }),
+            "gmsh crashed (Segmentation fault) while meshing");
+}
+
+// A Sleep, a read that waits: no CPU is spent, only the wall clock stops it.
+TEST(MeshingChild, TheWallClockStopsAChildThatWaits) {
+  MeshingChildLimits limits;
+  limits.wall_limit_s = 1;
+  const auto start = std::chrono::steady_clock::now();
+  const std::string message = failure([]() -> std::string {
+    meshing_phase("reading the geometry");
+    ::sleep(60);
+    return "";
+  }, limits);
+  EXPECT_EQ(message, "gmsh did not finish within the wall-clock limit of 1 s (--mesh-timeout) while reading the "
+                     "geometry; a loop in the geometry?");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30);  // not the 60 s
+}
+
+// A step bounded tighter than the child (the mesh estimate): its own message, as an input error.
+TEST(MeshingChild, ABoundedStepEndsWithItsOwnMessage) {
+  try {
+    run_in_meshing_child([] {
+      run_bounded("estimating", 64LL << 20, 30, "the estimate needs too much", [] {
+        std::vector<char> v(1LL << 30, 1);
+        (void)v;
+      });
+      return std::string();
+    });
+    FAIL() << "no error";
+  } catch (const MeshingChildError& e) {
+    EXPECT_EQ(std::string(e.what()), "the estimate needs too much");
+    EXPECT_TRUE(e.input);
+  }
+  EXPECT_EQ(failure([] {
+              run_bounded("estimating", 1LL << 30, 1, "the estimate takes too long", [] { ::sleep(60); });
+              return std::string();
+            }),
+            "the estimate takes too long");
+  // Outside a meshing child the step just runs.
+  int ran = 0;
+  run_bounded("estimating", 1, 1, "never", [&] { ++ran; });
+  EXPECT_EQ(ran, 1);
+}
+
+// The read box (core/mesh/read_box.h): only the staging folder can be read.
+TEST(MeshingChild, ReadsNothingOutsideItsFolderWhereTheKernelHasLandlock) {
+  if (thinlayer::landlock_abi() == 0) GTEST_SKIP() << "no Landlock in this kernel: the box is the staging folder only";
+  const fs::path dir = fs::temp_directory_path() / ("thinlayer-box-" + std::to_string(::getpid()));
+  fs::create_directories(dir / "staged");
+  std::ofstream(dir / "staged" / "inside.geo") << "x = 1;\n";
+  std::ofstream(dir / "outside.txt") << "secret\n";
+  MeshingChildLimits limits;
+  limits.read_folder = (dir / "staged").string();
+  const std::string answer = run_in_meshing_child([&] {
+    std::string what;
+    what += ::open("inside.geo", O_RDONLY) >= 0 ? "read inside;" : "cannot read inside;";  // its working directory
+    what += ::open((dir / "outside.txt").c_str(), O_RDONLY) >= 0 ? "read outside;" : "";
+    what += ::open("/etc/hostname", O_RDONLY) >= 0 ? "read /etc;" : "";
+    what += ::open("../outside.txt", O_RDONLY) >= 0 ? "read ..;" : "";
+    return what;
+  }, limits);
+  EXPECT_EQ(answer, "read inside;");
+  fs::remove_all(dir);
+}
+
+// The child's answer is read back with every count checked: a count beyond the bytes sent is
+// refused before anything is allocated (a child running gmsh on a user's file is not trusted).
+TEST(MeshingChild, ABrokenAnswerIsRefusedNotAllocated) {
+  thinlayer::ByteWriter w;
+  thinlayer::put(w, std::uint64_t{1} << 60);  // a vector "of 2^60 elements", then nothing
+  const std::string bytes = w.take();
+  thinlayer::ByteReader r(bytes);
+  std::vector<double> v;
+  EXPECT_THROW(thinlayer::get(r, v), std::runtime_error);
+  thinlayer::ByteWriter m;
+  thinlayer::Mesh mesh;
+  mesh.nodes.resize(1, 2);
+  mesh.nodes << 0, 0;
+  mesh.quads = {{0, 0, 0, 7}};  // node 7 of 1
+  thinlayer::put(m, mesh);
+  const std::string mesh_bytes = m.take();
+  thinlayer::ByteReader mr(mesh_bytes);
+  thinlayer::Mesh back;
+  EXPECT_THROW(thinlayer::get(mr, back), std::runtime_error);
 }
 
 // What a script could ask of gmsh: each attempt fails inside the child, nothing appears outside.

@@ -120,6 +120,30 @@ TEST(SceneJson, PositionsOfKeysAndArrayElements) {
   EXPECT_EQ(j.at("/c").column, 14);
 }
 
+// A key of the positions' tree is stored once; escaped keys (RFC 6901) and a missing member
+// answer with the nearest parent's position.
+TEST(SceneJson, PositionsOfEscapedKeysAndOfWhatIsNotThere) {
+  const PositionedJson j = parse_positioned_json("{\"a/b\": {\"~c\": [0,\n 5]}}", "x");
+  EXPECT_EQ(j.at("/a~1b").column, 2);
+  EXPECT_EQ(j.at("/a~1b/~0c").column, 10);
+  EXPECT_EQ(j.at("/a~1b/~0c/1").line, 2);
+  EXPECT_EQ(j.at("/a~1b/~0c/1").column, 2);
+  EXPECT_EQ(j.at("/a~1b/missing").column, 2);  // its parent's
+  EXPECT_EQ(j.at("").column, 1);
+}
+
+TEST(SceneJson, AKeyLongerThanTheBoundIsRefusedAtIt) {
+  const std::string long_key(max_json_key_bytes + 1, 'k');
+  const std::string m = expect_input_error("{\"a\": 1,\n \"" + long_key + "\": 2}");
+  EXPECT_EQ(m, "s.json:2:2: a key of 65 bytes (a key, a body's name among them, is at most 64)");
+  EXPECT_EQ(expect_input_error("{\"" + std::string(max_json_key_bytes, 'k') + "\": 2}"), "");
+}
+
+TEST(SceneSpec, ANameLongerThanTheBoundIsRefusedAtIt) {
+  const std::string m = spec_error("{\"name\": \"" + std::string(max_scene_name_bytes + 1, 'n') + "\"}");
+  EXPECT_EQ(m, "s.json:1:2: 'name' in the scene is 65 bytes long; a name is at most 64");
+}
+
 TEST(SceneSpec, UnknownKeyNamedWithItsPosition) {
   const std::string m = spec_error("{\"name\": \"x\",\n \"frction\": 1}");
   EXPECT_EQ(m.rfind("s.json:2:2: unknown key 'frction' in the scene", 0), 0u) << m;

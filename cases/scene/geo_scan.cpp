@@ -1,12 +1,8 @@
 #include "cases/scene/geo_scan.h"
 
-#include <cctype>
-#include <filesystem>
-#include <fstream>
+#include <algorithm>
+#include <cstdint>
 #include <map>
-#include <set>
-#include <sstream>
-#include <vector>
 
 #include "cases/scene/json_positions.h"
 
@@ -14,12 +10,12 @@ namespace thinlayer {
 
 namespace {
 
-namespace fs = std::filesystem;
-
+// A token as an offset into the text, not a copy: a script of 4 MiB of ';' is 4 M tokens
+// (cases/scene/scene_sources.h caps the text), 16 bytes each.
 struct Token {
-  enum Kind { Identifier, String, Other } kind = Other;
-  std::string text;
-  int line = 1;
+  enum Kind : std::uint8_t { Identifier, String, Other } kind = Other;
+  std::uint32_t begin = 0, size = 0;
+  std::int32_t line = 1;
 };
 
 // The refused identifiers and why (gmsh 4.8's Parser/Gmsh.y: the commands it runs on a
@@ -46,141 +42,149 @@ const std::map<std::string, std::string>& refused_words() {
   return words;
 }
 
-// The extensions gmsh reads as meshes or CAD shapes, not as scripts.
-bool is_data_file(const fs::path& path) {
-  static const std::set<std::string> data = {".msh", ".step", ".stp", ".brep", ".iges", ".igs", ".stl", ".unv",
-                                             ".med", ".mesh", ".vtk", ".bdf", ".nas", ".inp", ".xao"};
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return data.count(extension) > 0;
-}
+bool is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }  // Gmsh.l's [\ \t\n\r\f]
 
-class GeoScanner {
+class Scanner {
  public:
-  GeoScanner(std::string folder) : folder_(fs::weakly_canonical(fs::absolute(folder))) {}
+  Scanner(const std::string& text, const std::string& source) : text_(text), source_(source) {}
 
-  void scan(const fs::path& file, int depth) {
-    if (depth > 16) throw InputError(file.string() + ": files included 16 deep (an include loop?)");
-    const fs::path canonical = fs::weakly_canonical(fs::absolute(file));
-    read_.insert(canonical.string());
-    if (!scanned_.insert(canonical).second) return;
-    const std::vector<Token> tokens = tokenize(file);
-    for (std::size_t i = 0; i < tokens.size(); ++i) check(file, tokens, i, depth);
+  std::vector<GeoReference> scan() {
+    tokenize();
+    std::vector<GeoReference> references;
+    for (std::size_t i = 0; i < tokens_.size(); ++i) check(i, references);
+    return references;
   }
 
  private:
-  [[noreturn]] static void refuse(const fs::path& file, int line, const std::string& what) {
-    throw InputError(file.string() + ":" + std::to_string(line) + ": " + what);
+  [[noreturn]] void refuse(int line, const std::string& what) const {
+    throw InputError(source_ + ":" + std::to_string(line) + ": " + what);
   }
 
-  static std::vector<Token> tokenize(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError("cannot read geometry file " + file.string());
-    std::ostringstream text_stream;
-    text_stream << in.rdbuf();
-    const std::string text = text_stream.str();
-    std::vector<Token> tokens;
+  // The end of the number starting at i, as Gmsh.l's longest match reads it:
+  // {digit}+ ("." {digit}*)? {exp}? | {digit}* "." {digit}+ {exp}?, {exp} = [Ee][-+]?{digit}+.
+  std::size_t number_end(std::size_t i) const {
+    const std::size_t n = text_.size();
+    while (i < n && is_digit(text_[i])) ++i;
+    if (i < n && text_[i] == '.') {
+      ++i;
+      while (i < n && is_digit(text_[i])) ++i;
+    }
+    if (i < n && (text_[i] == 'e' || text_[i] == 'E')) {
+      std::size_t k = i + 1;
+      if (k < n && (text_[k] == '+' || text_[k] == '-')) ++k;
+      if (k < n && is_digit(text_[k])) {
+        while (k < n && is_digit(text_[k])) ++k;
+        i = k;
+      }
+    }
+    return i;
+  }
+
+  void add(Token::Kind kind, std::size_t begin, std::size_t size, int line) {
+    tokens_.push_back({kind, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(size), line});
+  }
+
+  void tokenize() {
+    if (text_.size() >= UINT32_MAX) refuse(1, "a script of 4 GiB or more");
+    // Anywhere, a comment included: gmsh's comment ends at a NUL, the scan's would at the newline.
+    if (const std::size_t nul = text_.find('\0'); nul != std::string::npos)
+      refuse(1 + static_cast<int>(std::count(text_.begin(), text_.begin() + static_cast<std::ptrdiff_t>(nul), '\n')),
+             "a NUL byte: gmsh ends a comment or a string there, so it would read this file otherwise than a text "
+             "editor shows it");
     int line = 1;
-    auto identifier_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-    for (std::size_t i = 0; i < text.size();) {
-      const char c = text[i];
+    const std::size_t n = text_.size();
+    for (std::size_t i = 0; i < n;) {
+      const char c = text_[i];
       if (c == '\n') {
         ++line, ++i;
-      } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
-        while (i < text.size() && text[i] != '\n') ++i;
-      } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+      } else if (c == '/' && i + 1 < n && text_[i + 1] == '/') {
+        while (i < n && text_[i] != '\n') ++i;
+      } else if (c == '/' && i + 1 < n && text_[i + 1] == '*') {
         const int start = line;
-        std::size_t end = text.find("*/", i + 2);
-        if (end == std::string::npos) refuse(file, start, "a comment that never ends");
-        for (; i < end + 2; ++i) line += text[i] == '\n';
+        const std::size_t end = text_.find("*/", i + 2);
+        if (end == std::string::npos) refuse(start, "a comment that never ends");
+        for (; i < end + 2; ++i) line += text_[i] == '\n';
       } else if (c == '"' || c == '\'') {  // gmsh's strings have no escapes
         const int start = line;
-        const std::size_t end = text.find(c, i + 1);
-        if (end == std::string::npos) refuse(file, start, "a string that never ends");
-        tokens.push_back({Token::String, text.substr(i + 1, end - i - 1), start});
-        for (; i <= end; ++i) line += text[i] == '\n';
-      } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+        const std::size_t end = text_.find(c, i + 1);
+        if (end == std::string::npos) refuse(start, "a string that never ends");
+        if (end - i - 1 > geo_string_max)
+          refuse(start, "a string of " + std::to_string(end - i - 1) + " bytes: gmsh reads at most " +
+                            std::to_string(geo_string_max) + " and the rest as statements");
+        add(Token::String, i + 1, end - i - 1, start);
+        for (; i <= end; ++i) line += text_[i] == '\n';
+      } else if (is_alpha(c)) {
         const std::size_t start = i;
-        while (i < text.size() && identifier_char(text[i])) ++i;
-        tokens.push_back({Token::Identifier, text.substr(start, i - start), line});
-      } else if (std::isspace(static_cast<unsigned char>(c))) {
+        while (i < n && (is_alpha(text_[i]) || is_digit(text_[i]))) ++i;
+        add(Token::Identifier, start, i - start, line);
+      } else if (is_digit(c) || (c == '.' && i + 1 < n && is_digit(text_[i + 1]))) {
+        i = number_end(i);  // a number: nothing to check in it
+      } else if (is_blank(c)) {
         ++i;
       } else {
-        tokens.push_back({Token::Other, std::string(1, c), line});
+        add(Token::Other, i, 1, line);
         ++i;
       }
     }
-    return tokens;
   }
 
-  static bool is(const std::vector<Token>& t, std::size_t i, const std::string& text) {
-    return i < t.size() && t[i].kind == Token::Other && t[i].text == text;
+  std::string text(std::size_t i) const { return text_.substr(tokens_[i].begin, tokens_[i].size); }
+  bool is(std::size_t i, char c) const {
+    return i < tokens_.size() && tokens_[i].kind == Token::Other && text_[tokens_[i].begin] == c;
   }
 
-  void check(const fs::path& file, const std::vector<Token>& t, std::size_t i, int depth) {
-    const Token& token = t[i];
+  void check(std::size_t i, std::vector<GeoReference>& references) const {
+    const Token& token = tokens_[i];
     if (token.kind != Token::Identifier) return;
-    const std::string& word = token.text;
+    const std::string word = text(i);
     if (auto it = refused_words().find(word); it != refused_words().end())
-      refuse(file, token.line, "'" + word + "' " + it->second + ": refused in a scene's geometry");
+      refuse(token.line, "'" + word + "' " + it->second + ": refused in a scene's geometry");
     // "Mesh.Option" is an option; "Mesh 2;" meshes.
-    if (word == "Mesh" && !is(t, i + 1, "."))
-      refuse(file, token.line, "'Mesh' " + refused_words().at("RefineMesh") + ": refused in a scene's geometry");
-    if (word == "Printf") check_printf(file, t, i);
+    if (word == "Mesh" && !is(i + 1, '.'))
+      refuse(token.line, "'Mesh' " + refused_words().at("RefineMesh") + ": refused in a scene's geometry");
+    if (word == "Printf") check_printf(i);
     if (word == "Include" || word == "Merge" || word == "MergeWithBoundingBox") {
-      const fs::path included = checked_path(file, t, i + 1, word);
-      if (!is(t, i + 2, ";")) refuse(file, token.line, "'" + word + "' takes one file name in quotes");
-      if (word == "Include" || !is_data_file(included)) scan(included, depth + 1);
-      read_.insert(included.string());
+      const std::string name = quoted_name(i + 1, word, token.line);
+      if (!is(i + 2, ';')) refuse(token.line, "'" + word + "' takes one file name in quotes");
+      references.push_back({word == "Include" ? GeoReference::Include : GeoReference::Merge, word, name, token.line});
     }
     if (word == "ShapeFromFile" || word == "ListFromFile") {
-      if (!is(t, i + 1, "(") && !is(t, i + 1, "[")) refuse(file, token.line, "'" + word + "' takes a file name in brackets");
-      read_.insert(checked_path(file, t, i + 2, word).string());
+      if (!is(i + 1, '(') && !is(i + 1, '[')) refuse(token.line, "'" + word + "' takes a file name in brackets");
+      const std::string name = quoted_name(i + 2, word, token.line);
+      if (!is(i + 3, ')') && !is(i + 3, ']')) refuse(token.line, "'" + word + "' takes one file name in quotes");
+      references.push_back({word == "ShapeFromFile" ? GeoReference::Shape : GeoReference::List, word, name, token.line});
     }
   }
 
   // Printf("...") > "file" and Printf("...", x) >> "file" write; Printf("...") prints.
-  static void check_printf(const fs::path& file, const std::vector<Token>& t, std::size_t i) {
-    if (!is(t, i + 1, "(")) return;  // not a Printf statement: gmsh refuses it itself
+  void check_printf(std::size_t i) const {
+    if (!is(i + 1, '(')) return;  // not a Printf statement: gmsh refuses it itself
     int open = 0;
     std::size_t k = i + 1;
-    for (; k < t.size(); ++k) {
-      if (is(t, k, "(")) ++open;
-      if (is(t, k, ")") && --open == 0) break;
+    for (; k < tokens_.size(); ++k) {
+      if (is(k, '(')) ++open;
+      if (is(k, ')') && --open == 0) break;
     }
-    if (is(t, k + 1, ">")) refuse(file, t[i].line, "'Printf(...) >' writes a file: refused in a scene's geometry");
+    if (is(k + 1, '>')) refuse(tokens_[i].line, "'Printf(...) >' writes a file: refused in a scene's geometry");
   }
 
-  // The file named by the string token t[k], resolved as gmsh does (FixRelativePath: against
-  // the folder of the file that names it); refused unless it lies in the scene's folder.
-  fs::path checked_path(const fs::path& file, const std::vector<Token>& t, std::size_t k, const std::string& word) const {
-    const int line = t[k - 1].line;
-    if (k >= t.size() || t[k].kind != Token::String)
-      refuse(file, line, "'" + word + "' takes a file name in quotes (a computed name cannot be checked)");
-    const fs::path named = t[k].text;
-    const fs::path resolved = named.is_absolute() ? named : fs::absolute(file).parent_path() / named;
-    const fs::path canonical = fs::weakly_canonical(resolved);
-    const std::string inside = folder_.string() + "/";
-    if (canonical.string().rfind(inside, 0) != 0)
-      refuse(file, line, "'" + word + "' of " + t[k].text + ", a file outside the scene's folder " + folder_.string() +
-                             ": refused in a scene's geometry");
-    return canonical;
+  std::string quoted_name(std::size_t k, const std::string& word, int line) const {
+    if (k >= tokens_.size() || tokens_[k].kind != Token::String)
+      refuse(line, "'" + word + "' takes a file name in quotes (a computed name cannot be checked)");
+    return text(k);
   }
 
-  fs::path folder_;
-  std::set<fs::path> scanned_;
-  std::set<std::string> read_;  // every file the geometry reads
-
- public:
-  const std::set<std::string>& files_read() const { return read_; }
+  const std::string& text_;
+  const std::string& source_;
+  std::vector<Token> tokens_;
 };
 
 }  // namespace
 
-std::vector<std::string> scan_geo(const std::string& geo, const std::string& scene_folder) {
-  GeoScanner scanner(scene_folder);
-  scanner.scan(geo, 0);
-  return {scanner.files_read().begin(), scanner.files_read().end()};
+std::vector<GeoReference> scan_geo_text(const std::string& text, const std::string& source) {
+  return Scanner(text, source).scan();
 }
 
 }  // namespace thinlayer

@@ -46,11 +46,35 @@ class CountingIterator {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
+// Positions of byte offsets, computed forward from the last one: the events come in reading
+// order, so the text is walked once (position_of from the start each time was quadratic).
+class PositionCursor {
+ public:
+  explicit PositionCursor(const std::string& text) : text_(text) {}
+  TextPosition at(std::size_t offset) {
+    if (offset < offset_) offset_ = 0, position_ = {};
+    for (; offset_ < offset && offset_ < text_.size(); ++offset_) {
+      if (text_[offset_] == '\n') {
+        ++position_.line;
+        position_.column = 1;
+      } else {
+        ++position_.column;
+      }
+    }
+    return position_;
+  }
+
+ private:
+  const std::string& text_;
+  std::size_t offset_ = 0;
+  TextPosition position_;
+};
+
 // Records the position of every key and array element, and refuses duplicate keys.
 class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
  public:
   PositionRecorder(const std::string& text, const std::size_t* read, PositionedJson& out)
-      : text_(text), read_(read), out_(out) {}
+      : text_(text), read_(read), out_(out), cursor_(text) {}
 
   bool null() override { return value(); }
   bool boolean(bool) override { return value(); }
@@ -71,19 +95,17 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
   bool binary(binary_t&) override { return value(); }
   bool start_object(std::size_t) override {
     value();
-    stack_.push_back({true, 0, pointer_, {}});
+    stack_.push_back({true, 0, current_, {}});
     return true;
   }
   bool key(string_t& k) override {
     Frame& f = stack_.back();
     const std::size_t start = next_token(last_end_, "{,");
-    if (!f.keys.insert(k).second) {
-      duplicate_ = "key '" + k + "' given twice";
-      duplicate_at_ = position_of(text_, start);
-      return false;
-    }
-    pointer_ = f.pointer + "/" + escape(k);
-    out_.positions[pointer_] = position_of(text_, start);
+    if (k.size() > max_json_key_bytes)
+      return refuse(start, "a key of " + std::to_string(k.size()) + " bytes (a key, a body's name among them, is at most " +
+                               std::to_string(max_json_key_bytes) + ")");
+    if (!f.keys.insert(k).second) return refuse(start, "key '" + k + "' given twice");
+    current_ = add_node(f.node, k, start);
     last_end_ = *read_;
     pending_key_ = true;
     return true;
@@ -91,7 +113,7 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
   bool end_object() override { return close(); }
   bool start_array(std::size_t) override {
     value();
-    stack_.push_back({false, 0, pointer_, {}});
+    stack_.push_back({false, 0, current_, {}});
     return true;
   }
   bool end_array() override { return close(); }
@@ -101,13 +123,8 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
     return false;
   }
 
-  const std::string& duplicate() const { return duplicate_; }
-  bool refuse(std::size_t at, const std::string& why) {
-    duplicate_ = why;
-    duplicate_at_ = position_of(text_, at);
-    return false;
-  }
-  TextPosition duplicate_at() const { return duplicate_at_; }
+  const std::string& refusal() const { return refusal_; }
+  TextPosition refusal_at() const { return refusal_at_; }
   const std::string& error() const { return error_; }
   std::size_t error_byte() const { return error_byte_; }
 
@@ -115,15 +132,21 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
   struct Frame {
     bool object = false;
     int index = 0;
-    std::string pointer;
+    std::size_t node = 0;  // the container's node in out_.positions
     std::set<std::string> keys;
   };
 
-  // RFC 6901: '~' → "~0", '/' → "~1".
-  static std::string escape(const std::string& k) {
-    std::string s;
-    for (char c : k) s += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
-    return s;
+  bool refuse(std::size_t at, const std::string& why) {
+    refusal_ = why;
+    refusal_at_ = cursor_.at(at);
+    return false;
+  }
+
+  std::size_t add_node(std::size_t parent, const std::string& key, std::size_t offset) {
+    std::vector<PositionTree::Node>& nodes = out_.positions.nodes;
+    nodes.push_back({cursor_.at(offset), {}});
+    nodes[parent].children[key] = nodes.size() - 1;
+    return nodes.size() - 1;
   }
 
   // The first byte at or after `from` that is neither blank nor one of `separators`: the start
@@ -134,15 +157,15 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
     return i;
   }
 
-  // A value starts: an array element gets its own pointer and position; a member value has
-  // its key's.
+  // A value starts: an array element gets its own node and position; a member value has its
+  // key's.
   bool value() {
     if (stack_.empty()) {
-      out_.positions[""] = position_of(text_, next_token(0, ""));
+      out_.positions.nodes.assign(1, {cursor_.at(next_token(0, "")), {}});
+      current_ = 0;
     } else if (!stack_.back().object) {
       Frame& f = stack_.back();
-      pointer_ = f.pointer + "/" + std::to_string(f.index++);
-      out_.positions[pointer_] = position_of(text_, next_token(last_end_, "[,"));
+      current_ = add_node(f.node, std::to_string(f.index++), next_token(last_end_, "[,"));
     } else if (!pending_key_) {
       return false;  // cannot happen in valid JSON
     }
@@ -153,7 +176,6 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
 
   bool close() {
     stack_.pop_back();
-    pointer_ = stack_.empty() ? "" : stack_.back().pointer;
     last_end_ = *read_;
     return true;
   }
@@ -161,12 +183,13 @@ class PositionRecorder : public nlohmann::json_sax<nlohmann::json> {
   const std::string& text_;
   const std::size_t* read_;
   PositionedJson& out_;
+  PositionCursor cursor_;
   std::vector<Frame> stack_;
-  std::string pointer_;
+  std::size_t current_ = 0;  // the node of the value being read
   std::size_t last_end_ = 0;
   bool pending_key_ = false;
-  std::string duplicate_, error_;
-  TextPosition duplicate_at_;
+  std::string refusal_, error_;
+  TextPosition refusal_at_;
   std::size_t error_byte_ = 0;
 };
 
@@ -223,12 +246,28 @@ TextPosition position_of(const std::string& text, std::size_t offset) {
 }
 
 TextPosition PositionedJson::at(const std::string& pointer) const {
-  std::string p = pointer;
-  while (true) {
-    if (auto it = positions.find(p); it != positions.end()) return it->second;
-    if (p.empty()) return {};
-    p = p.substr(0, p.rfind('/'));
+  if (positions.nodes.empty()) return {};
+  // The pointer's tokens (RFC 6901: "~1" is '/', "~0" is '~'), followed as far as they go: the
+  // nearest parent that has a position answers.
+  std::size_t node = 0;
+  for (std::size_t at = pointer.empty() ? std::string::npos : 1; at != std::string::npos && at <= pointer.size();) {
+    const std::size_t slash = pointer.find('/', at);
+    const std::string raw = pointer.substr(at, slash == std::string::npos ? std::string::npos : slash - at);
+    std::string token;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (raw[i] == '~' && i + 1 < raw.size() && (raw[i + 1] == '0' || raw[i + 1] == '1')) {
+        token += raw[i + 1] == '0' ? '~' : '/';
+        ++i;
+      } else {
+        token += raw[i];
+      }
+    }
+    const auto child = positions.nodes[node].children.find(token);
+    if (child == positions.nodes[node].children.end()) break;
+    node = child->second;
+    at = slash == std::string::npos ? std::string::npos : slash + 1;
   }
+  return positions.nodes[node].at;
 }
 
 void PositionedJson::fail(const std::string& pointer, const std::string& what) const {
@@ -243,7 +282,7 @@ PositionedJson parse_positioned_json(const std::string& text, const std::string&
   PositionRecorder recorder(text, &read, out);
   const CountingIterator first(text.data(), text.data(), &read), last(text.data() + text.size(), text.data(), &read);
   if (!nlohmann::json::sax_parse(first, last, &recorder)) {
-    if (!recorder.duplicate().empty()) throw InputError(where(source, recorder.duplicate_at()) + recorder.duplicate());
+    if (!recorder.refusal().empty()) throw InputError(where(source, recorder.refusal_at()) + recorder.refusal());
     // nlohmann counts the byte it stopped at from 1.
     const std::size_t byte = recorder.error_byte() > 0 ? recorder.error_byte() - 1 : 0;
     throw InputError(where(source, position_of(text, byte)) + syntax_message(recorder.error()));

@@ -8,6 +8,8 @@
 #include <set>
 #include <sstream>
 
+#include "core/mesh/meshing_child.h"
+
 namespace thinlayer {
 
 namespace {
@@ -87,9 +89,20 @@ double option(const std::string& name) {
   return v;
 }
 
-// The .geo's own clipping of every size.
+// The .geo's own clipping of every size, in gmsh 4.8's order (Mesh/BackgroundMeshTools.cpp,
+// BGM_MeshSize): clamped to [MeshSizeMin, MeshSizeMax] (the larger wins), then scaled by
+// MeshSizeFactor.
 double clipped(double h) {
-  return std::clamp(h * option("Mesh.MeshSizeFactor"), option("Mesh.MeshSizeMin"), option("Mesh.MeshSizeMax"));
+  return std::min(std::max(h, option("Mesh.MeshSizeMin")), option("Mesh.MeshSizeMax")) * option("Mesh.MeshSizeFactor");
+}
+
+// Every surface of the model: gmsh meshes them all, a surface in no body too.
+std::vector<int> all_surfaces() {
+  gmsh::vectorpair dim_tags;
+  gmsh::model::getEntities(dim_tags, 2);
+  std::vector<int> tags;
+  for (const auto& [dim, tag] : dim_tags) tags.push_back(tag);
+  return tags;
 }
 
 // ∫ dA / h² over a body of area `a` with `l` mm of bondline on its boundary: a band along the
@@ -108,34 +121,46 @@ double estimate_from_mesh_size(const SceneSpec& spec) {
   for (const SceneInterfaceSpec& i : spec.interfaces)
     for (int c : entities(1, i.group)) on_bondline.insert(c);
   const double h_i = clipped(*spec.h_interface), h_f = std::max(h_i, clipped(*spec.h_far));
+  std::set<int> in_body;
   double nodes = 0;
   for (const SceneBodySpec& b : spec.bodies) {
     const std::vector<int> surfaces = entities(2, b.group);
+    in_body.insert(surfaces.begin(), surfaces.end());
     double l = 0;
     for (int c : boundary(surfaces))
       if (on_bondline.count(std::abs(c))) l += length(c);
     nodes += inverse_square_size_integral(area(surfaces), l, h_i, h_f);
   }
+  for (int s : all_surfaces())  // away from the bondlines: the far size
+    if (!in_body.count(s)) nodes += area({s}) / (h_f * h_f);
   return nodes_per_area(spec.element) * nodes;
 }
 
 // The .geo's own sizes: mesh the curves (the size floored so that this stays bounded), take
-// each body's mean boundary segment, clear the curve mesh.
+// each surface's mean boundary segment, clear the curve mesh. Transfinite counts ignore sizes:
+// refuse_oversized_mesh bounds this pass's memory and time itself.
 double estimate_from_curve_mesh(const SceneSpec& spec) {
-  std::map<std::string, std::vector<int>> curves;
+  const std::vector<int> surfaces = all_surfaces();
+  std::map<int, std::vector<int>> curves;
   double total_length = 0;
-  for (const SceneBodySpec& b : spec.bodies) {
-    curves[b.name] = boundary(entities(2, b.group));
-    for (int c : curves[b.name]) total_length += length(c);
+  for (int s : surfaces) {
+    curves[s] = boundary({s});
+    for (int c : curves[s]) total_length += length(c);
   }
-  const double previous_min = option("Mesh.MeshSizeMin");
-  gmsh::option::setNumber("Mesh.MeshSizeMin", std::max(previous_min, total_length / static_cast<double>(spec.max_nodes)));
+  // gmsh scales the clamped size by MeshSizeFactor last: the floor is set on the clamp, divided
+  // by the factor (a factor of 1e-7 would otherwise go under it), and the ceiling kept above it.
+  const double previous_min = option("Mesh.MeshSizeMin"), previous_max = option("Mesh.MeshSizeMax");
+  const double factor = option("Mesh.MeshSizeFactor");
+  const double floor = total_length / static_cast<double>(spec.max_nodes) / (factor > 0 ? factor : 1.0);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", std::max(previous_min, floor));
+  gmsh::option::setNumber("Mesh.MeshSizeMax", std::max(previous_max, std::max(previous_min, floor)));
   gmsh::model::mesh::generate(1);
   gmsh::option::setNumber("Mesh.MeshSizeMin", previous_min);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", previous_max);
   double nodes = 0;
-  for (const SceneBodySpec& b : spec.bodies) {
+  for (int s : surfaces) {
     double perimeter = 0, segments = 0;
-    for (int c : curves[b.name]) {
+    for (int c : curves[s]) {
       std::vector<std::size_t> tags;
       std::vector<double> xyz, u;
       gmsh::model::mesh::getNodes(tags, xyz, u, 1, std::abs(c), /*includeBoundary=*/true, false);
@@ -143,7 +168,7 @@ double estimate_from_curve_mesh(const SceneSpec& spec) {
       perimeter += length(c);
     }
     const double h = perimeter / std::max(segments, 1.0);
-    nodes += nodes_per_area(spec.element) * area(entities(2, b.group)) / (h * h) + segments;
+    nodes += nodes_per_area(spec.element) * area({s}) / (h * h) + segments;
   }
   gmsh::model::mesh::clear();
   return nodes;
@@ -164,7 +189,15 @@ double estimated_mesh_nodes(const SceneSpec& spec) {
 }
 
 void refuse_oversized_mesh(const SceneSpec& spec) {
-  const double nodes = estimated_mesh_nodes(spec);
+  double nodes = 0;
+  const std::string file = spec.geometry.empty() ? spec.mesh : spec.geometry;
+  const unsigned seconds = static_cast<unsigned>(std::clamp(spec.mesh_timeout_s, 1.0, estimate_seconds));
+  run_bounded("estimating the mesh's size", estimate_memory_bytes, seconds,
+              file + ": estimating the mesh's size took more than " + std::to_string(estimate_memory_bytes >> 20) +
+                  " MiB or " + std::to_string(seconds) +
+                  " s: the geometry asks for a very fine mesh (a Transfinite count, Mesh.MeshSizeFactor, "
+                  "Mesh.MeshSizeMin?); coarsen it or give mesh_size",
+              [&] { nodes = estimated_mesh_nodes(spec); });
   if (!(nodes <= static_cast<double>(spec.max_nodes))) {
     std::ostringstream s;
     s.precision(2);

@@ -6,10 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <new>
+#include <sstream>
 
 #include "cases/scene/mesh_estimate.h"
 #include "cases/scene/scene_mesh_child.h"
 #include "core/mesh/gmsh_session.h"
+#include "core/mesh/meshing_child.h"
 
 namespace thinlayer {
 
@@ -101,13 +104,58 @@ double bounding_size(const std::vector<Mesh>& meshes) {
 
 [[noreturn]] void fail_at(const std::string& where, const std::string& what) { throw InputError(where + ": " + what); }
 
+// A .geo's points, before meshing: a point off z = 0 makes a surface gmsh cannot mesh flat
+// ("Unable to recover the edge") or a mesh out of the plane.
+void refuse_off_plane_points(const std::string& file) {
+  gmsh::vectorpair points;
+  gmsh::model::getEntities(points, 0);
+  for (const auto& [dim, tag] : points) {
+    std::vector<double> xyz;
+    gmsh::model::getValue(0, tag, {}, xyz);
+    if (xyz.size() == 3 && (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || xyz[2] != 0)) {
+      std::ostringstream at;
+      at << file << ": point " << tag << " at (" << xyz[0] << ", " << xyz[1] << ", " << xyz[2] << ") ";
+      throw InputError(at.str() + (std::isfinite(xyz[2]) && std::isfinite(xyz[0]) && std::isfinite(xyz[1])
+                                       ? "is off the plane z = 0: a scene is two-dimensional, its geometry lies in z = 0"
+                                       : "has a coordinate that is not a finite number"));
+    }
+  }
+}
+
+// mm: beyond it the areas and the solve's squares of lengths leave the doubles' comfortable range
+// (a node at 1e300 was "bodies share the cell"); a joint is far smaller.
+constexpr double largest_coordinate = 1e9;
+
+// A scene is two-dimensional: every node of the model lies in z = 0 (a .msh with z != 0 was
+// solved as its projection without a word), at finite coordinates (a NaN node was a
+// "non-positive area" later). `tolerance`: the z that round-off leaves, mm.
+void refuse_off_plane_nodes(const std::string& file, double tolerance) {
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz, parametric;
+  gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, /*includeBoundary=*/true, /*returnParametricCoord=*/false);
+  for (std::size_t k = 0; k < tags.size(); ++k) {
+    const double x = xyz[3 * k], y = xyz[3 * k + 1], z = xyz[3 * k + 2];
+    std::ostringstream at;
+    at.precision(6);
+    at << "node " << tags[k] << " at (" << x << ", " << y << ", " << z << ")";
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+      throw InputError(file + ": " + at.str() + " has a coordinate that is not a finite number");
+    if (std::abs(x) > largest_coordinate || std::abs(y) > largest_coordinate)
+      throw InputError(file + ": " + at.str() + " lies beyond 1e9 mm of the origin (lengths are in mm)");
+    if (std::abs(z) > tolerance)
+      throw InputError(file + ": " + at.str() + " is off the plane z = 0: a scene is two-dimensional, its mesh lies in z = 0");
+  }
+}
+
 }  // namespace
 
 namespace {
 
-SceneMeshes mesh_in_this_process(const SceneSpec& spec) {
+// `staged`: the staged copy of the geometry or mesh (scene_mesh_child.h); messages name the user's file.
+SceneMeshes mesh_in_this_process(const SceneSpec& spec, const std::string& staged) {
   const auto start = std::chrono::steady_clock::now();
   const std::string file = spec.geometry.empty() ? spec.mesh : spec.geometry;
+  meshing_phase(spec.geometry.empty() ? "reading the mesh" : "reading the geometry");
   GmshModelScope scope("scene");
   // gmsh's own options for this model only: the scope clears the model, the options stay
   // process-global, so they are set back when done.
@@ -116,7 +164,9 @@ SceneMeshes mesh_in_this_process(const SceneSpec& spec) {
       from_points("Mesh.MeshSizeFromPoints", 1), from_curvature("Mesh.MeshSizeFromCurvature", 0);
   SceneMeshes out;
   try {
-    with_gmsh_errors([&] { gmsh::open(file); });
+    with_gmsh_errors([&] { gmsh::open(staged); });
+  } catch (const std::bad_alloc&) {
+    throw;  // the meshing child says so, with its limit and the phase
   } catch (const std::exception& e) {
     fail_at(spec.geometry_where, "gmsh cannot read " + file + ": " + e.what());
   }
@@ -146,8 +196,19 @@ SceneMeshes mesh_in_this_process(const SceneSpec& spec) {
                              " acts along a curve; a force may act on a point)");
     }
 
+    if (spec.geometry.empty()) refuse_off_plane_nodes(file, 0.0);  // a .msh: z exactly 0, as gmsh writes a 2D mesh
+    else refuse_off_plane_points(file);
     refuse_oversized_mesh(spec);  // bounded before spent (cases/scene/mesh_estimate.h)
-    if (!spec.geometry.empty()) generate(spec, bondline_curves);
+    if (!spec.geometry.empty()) {
+      meshing_phase("meshing");
+      generate(spec, bondline_curves);
+      double xmin, ymin, zmin, xmax, ymax, zmax;
+      gmsh::model::getBoundingBox(-1, -1, xmin, ymin, zmin, xmax, ymax, zmax);
+      // OpenCASCADE's points carry round-off of the order of its tolerance, 1e-7 of the size.
+      const double size = std::hypot(xmax - xmin, ymax - ymin);
+      refuse_off_plane_nodes(file, std::isfinite(size) ? 1e-6 * std::max(size, 1.0) : 0.0);
+    }
+    meshing_phase("converting the mesh");
     std::vector<NamedBoundary> boundaries;
     for (const auto& [key, tags] : groups)
       if (key.first <= 1) {

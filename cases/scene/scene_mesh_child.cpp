@@ -1,10 +1,11 @@
 #include "cases/scene/scene_mesh_child.h"
 
+#include <memory>
 #include <sstream>
 
-#include "cases/scene/geo_scan.h"
 #include "core/mesh/mesh_bytes.h"
 #include "core/mesh/meshing_child.h"
+#include "core/mesh/staging_folder.h"
 
 namespace thinlayer {
 
@@ -38,37 +39,61 @@ void refuse_overgrown(const SceneSpec& spec, const SceneMeshes& meshes) {
   }
 }
 
+// gmsh's messages name the staged copy; the user knows the file by its own name.
+std::string in_user_terms(std::string message, const std::string& staging_root, const std::string& folder) {
+  const std::string staged = staging_root + "/", user = folder.empty() || folder == "." ? "" : folder + "/";
+  for (std::size_t at = message.find(staged); at != std::string::npos; at = message.find(staged, at + user.size()))
+    message.replace(at, staged.size(), user);
+  return message;
+}
+
 }  // namespace
 
 std::vector<InputFile> scene_inputs(const SceneSpec& spec) {
   std::vector<InputFile> inputs = {{spec.file, "the scene file"}};
-  if (!spec.mesh.empty()) inputs.push_back({spec.mesh, "its mesh"});
-  if (!spec.geometry.empty()) {
-    inputs.push_back({spec.geometry, "its geometry"});
-    for (const std::string& file : scan_geo(spec.geometry, spec.folder)) inputs.push_back({file, "a file its geometry reads"});
-  }
+  if (!spec.sources) return inputs;
+  for (const SceneSource& f : spec.sources->files)
+    inputs.push_back({f.path, &f == &spec.sources->files.front() ? (spec.mesh.empty() ? "its geometry" : "its mesh")
+                                                                  : "a file its geometry reads"});
   return inputs;
 }
 
-SceneMeshes mesh_scene_in_child(const SceneSpec& spec, const std::function<SceneMeshes(const SceneSpec&)>& mesh) {
-  if (!spec.geometry.empty()) scan_geo(spec.geometry, spec.folder);
+SceneMeshes mesh_scene_in_child(const SceneSpec& spec,
+                                const std::function<SceneMeshes(const SceneSpec&, const std::string&)>& mesh) {
+  if (!spec.sources) throw std::logic_error("mesh_scene_in_child: the scene's sources were not read");
   const std::string file = spec.geometry.empty() ? spec.mesh : spec.geometry;
+  std::vector<StagedFile> files;
+  for (const SceneSource& f : spec.sources->files) files.push_back({f.staged, &f.bytes});
+  std::unique_ptr<StagingFolder> staging;
+  try {
+    staging = std::make_unique<StagingFolder>(spec.sources->folders, files);
+  } catch (const std::runtime_error& e) {
+    throw InputError(file + ": " + e.what());
+  }
+  MeshingChildLimits limits;
+  limits.wall_limit_s = spec.mesh_timeout_s;
+  limits.read_folder = staging->root();
+  const std::string entry = staging->root() + "/" + spec.sources->entry;
   std::string bytes;
   try {
-    bytes = run_in_meshing_child([&] {
-      const SceneMeshes meshes = mesh(spec);
-      refuse_overgrown(spec, meshes);
-      ByteWriter w;
-      put(w, meshes);
-      return w.take();
-    });
+    bytes = run_in_meshing_child(
+        [&] {
+          const SceneMeshes meshes = mesh(spec, entry);
+          refuse_overgrown(spec, meshes);
+          ByteWriter w;
+          put(w, meshes);
+          return w.take();
+        },
+        limits);
   } catch (const MeshingChildError& e) {
-    if (e.input) throw InputError(e.what());  // it names the scene file's line, or the .geo's
-    throw InputError(file + ": " + e.what());
+    const std::string what = in_user_terms(e.what(), staging->root(), spec.folder);
+    if (e.input) throw InputError(what);  // it names the scene file's line, or the .geo's
+    throw InputError(file + ": " + what);
   }
   ByteReader r(bytes);
   SceneMeshes meshes;
   get(r, meshes);
+  if (!r.done()) throw InputError(file + ": the meshing process answered more than the meshes");
   return meshes;
 }
 

@@ -67,6 +67,15 @@ class ObjectReader {
     if (v.get<std::string>().empty()) fail(key, "'" + key + "' in " + what_ + " is empty");
     return v.get<std::string>();
   }
+  // A name (the scene's, a group's): it names HDF5 groups, scene ids and the report's figures, so
+  // it is short (a 15 M-letter name solved, then failed at the write after 104 s).
+  std::string name(const std::string& key) const {
+    const std::string n = text(key);
+    if (n.size() > max_scene_name_bytes)
+      fail(key, "'" + key + "' in " + what_ + " is " + std::to_string(n.size()) + " bytes long; a name is at most " +
+                    std::to_string(max_scene_name_bytes));
+    return n;
+  }
   // A finite number in [lo, hi] (hi may be excluded), or +inf as the string "inf" where allowed.
   double number(const std::string& key, double lo, double hi, bool hi_open = false, bool inf_allowed = false) const {
     return number_value(require(key), child(key), "'" + key + "' in " + what_, lo, hi, hi_open, inf_allowed);
@@ -116,9 +125,10 @@ void read_geometry(const ObjectReader& root, SceneSpec& s) {
   const std::string extension = std::filesystem::path(path).extension().string();
   if (key == "geometry" && extension != ".geo") root.fail(key, "'geometry' must name a gmsh .geo file, got " + path);
   if (key == "mesh" && extension != ".msh") root.fail(key, "'mesh' must name a gmsh .msh file, got " + path);
-  if (!std::filesystem::is_regular_file(path)) root.fail(key, key + " file " + path + " does not exist");
-  (key == "geometry" ? s.geometry : s.mesh) = path;
   s.geometry_where = root.where(key);
+  // Read and checked here, once: these bytes are what gmsh will be given (scene_sources.h).
+  s.sources = std::make_shared<const SceneSources>(read_scene_sources(s.folder, root.text(key), key == "mesh", s.geometry_where));
+  (key == "geometry" ? s.geometry : s.mesh) = s.sources->files.front().path;
   if (root.has("mesh_size")) {
     if (key == "mesh") root.fail("mesh_size", "'mesh_size' applies to a 'geometry' only (a .msh is used as is)");
     const ObjectReader size(root.doc(), root.child("mesh_size"), "mesh_size", {"interface", "far"});
@@ -129,11 +139,22 @@ void read_geometry(const ObjectReader& root, SceneSpec& s) {
   }
 }
 
+// E and nu give the Lamé moduli; near nu = -1 or 1/2 they grow without bound (nu =
+// -0.9999999999999999 gave mu = 1e19 and a classifier's ratio that was not finite, far from the
+// scene file): refused at 'nu' where they leave the moduli's range.
+void refuse_extreme_moduli(const ObjectReader& r, const LameModuli& m, const std::string& what) {
+  if (std::abs(m.lambda) <= modulus_max && m.mu <= modulus_max) return;
+  std::ostringstream s;
+  s << what << ": E and nu give lambda = " << m.lambda << ", mu = " << m.mu << ", beyond " << modulus_max
+    << " (nu too close to -1 or 0.5)";
+  r.fail("nu", s.str());
+}
+
 SceneBodySpec read_body(const PositionedJson& doc, const std::string& name, const std::string& pointer) {
   const ObjectReader b(doc, pointer, "body '" + name + "'", {"group", "lambda", "mu", "E", "nu"});
   SceneBodySpec body;
   body.name = name;
-  body.group = b.text("group");
+  body.group = b.name("group");
   body.group_where = b.where("group");
   const bool lame = b.has("lambda") || b.has("mu"), young = b.has("E") || b.has("nu");
   if (lame == young) b.fail_here("body '" + name + "' needs either 'lambda' and 'mu' or 'E' and 'nu'");
@@ -141,6 +162,7 @@ SceneBodySpec read_body(const PositionedJson& doc, const std::string& name, cons
     const double E = b.number("E", 0, modulus_max), nu = b.number("nu", -1, 0.5, /*hi_open=*/true);
     if (!(E > 0) || !(nu > -1)) b.fail_here("body '" + name + "' needs E > 0 and -1 < nu < 0.5");
     const LameModuli m = lame_from_young(E, nu);
+    refuse_extreme_moduli(b, m, "body '" + name + "'");
     body.lambda = m.lambda;
     body.mu = m.mu;
     return body;
@@ -171,7 +193,7 @@ SceneInterfaceSpec read_interface(const SceneSpec& s, const PositionedJson& doc,
   const ObjectReader i(doc, pointer, what, {"group", "plus", "minus", "friction", "faces", "layer", "glue", "law"});
   SceneInterfaceSpec f;
   f.where = where;
-  f.group = i.text("group");
+  f.group = i.name("group");
   f.group_where = i.where("group");
   f.plus = i.text("plus");
   f.minus = i.text("minus");
@@ -203,6 +225,7 @@ SceneInterfaceSpec read_interface(const SceneSpec& s, const PositionedJson& doc,
     if (!(glue.E > 0)) g.fail("E", "'E' must be > 0");
     glue.nu = g.number("nu", -1, 0.5, /*hi_open=*/true);
     if (!(glue.nu > -1)) g.fail("nu", "'nu' must be in (-1, 0.5)");
+    refuse_extreme_moduli(g, lame_from_young(glue.E, glue.nu), "the glue");
     glue.thickness = g.number("thickness", 0, 1e6);
     if (!(glue.thickness > 0)) g.fail("thickness", "'thickness' must be > 0 (mm)");
     f.glue = glue;
@@ -254,7 +277,7 @@ void read_supports(const ObjectReader& root, SceneSpec& s) {
     const std::string p = root.child("supports") + "/" + std::to_string(k);
     const ObjectReader r(root.doc(), p, "support " + std::to_string(k), {"group", "u"});
     SceneSupportSpec sup;
-    sup.group = r.text("group");
+    sup.group = r.name("group");
     sup.where = r.where("group");
     const json& u = r.require("u");
     if (!u.is_array() || u.size() != 2) r.fail("u", "'u' must be an array of two components (a number in mm, or null: free)");
@@ -273,7 +296,7 @@ void read_loads(const ObjectReader& root, SceneSpec& s) {
     const std::string p = root.child("loads") + "/" + std::to_string(k);
     const ObjectReader r(root.doc(), p, "load " + std::to_string(k), {"group", "traction", "pressure", "force"});
     SceneLoadSpec load;
-    load.group = r.text("group");
+    load.group = r.name("group");
     load.where = r.where("group");
     if (r.has("traction") + r.has("pressure") + r.has("force") != 1)
       r.fail_here("load " + std::to_string(k) + " needs exactly one of 'traction' [tx, ty] (" + stress + "), 'pressure' p (" +
@@ -388,7 +411,7 @@ SceneSpec scene_spec_from_json(const PositionedJson& doc, const std::string& fol
   SceneSpec s;
   s.file = doc.source;
   s.folder = folder;
-  s.name = root.text("name");
+  s.name = root.name("name");
   // The name becomes HDF5 group and scene names (/studies/scene/<name>, <name>-limit-fast).
   if (!plain_name(s.name))
     root.fail("name", "'name' may hold letters, digits, '-', '_' and '.' only (it names groups in the results file)");

@@ -9,17 +9,23 @@
 // and each error names the file, line and column of the bad key or value. Paths (geometry,
 // mesh) are relative to the scene file's folder.
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cases/scene/json_positions.h"
+#include "cases/scene/scene_sources.h"
 #include "core/fem/material.h"
 #include "core/interface/glue.h"
 #include "core/interface/law.h"
 #include "core/mesh/mesh.h"
 
 namespace thinlayer {
+
+// The longest name a scene gives (its "name", a group's): names become HDF5 groups, scene ids
+// and the report's file names (cases/scene/json_positions.h caps a key, a body's name, alike).
+constexpr std::size_t max_scene_name_bytes = 64;
 
 struct SceneBodySpec {
   std::string name;    // the key in "bodies"
@@ -92,6 +98,9 @@ struct SceneSpec {
   std::string name;
   std::string geometry, mesh;  // exactly one set: a .geo to mesh, or a .msh 4.1 used as is (full paths)
   std::string geometry_where;
+  // The geometry or mesh and every file it reads, read and checked once: the bytes gmsh is given
+  // (cases/scene/scene_sources.h). Shared by the copies of a spec (the studies' bulks).
+  std::shared_ptr<const SceneSources> sources;
   std::optional<double> h_interface, h_far;  // mm, "mesh_size" (geometry only)
   ElementType element = ElementType::Q1;
   PlaneHypothesis plane = PlaneHypothesis::Strain;
@@ -105,6 +114,7 @@ struct SceneSpec {
   std::vector<double> eps;  // the studies' ε grid (mm); empty = the default one
   int layer_elements = 2;
   std::size_t max_nodes = 2'000'000;  // --max-nodes: a larger mesh is refused before meshing (mesh_estimate.h)
+  double mesh_timeout_s = 600;        // --mesh-timeout: the meshing child's wall clock, s (core/mesh/meshing_child.h)
 
   int body_index(const std::string& name) const;  // -1 if none
   // Some bondline has a layer mode ("layer" or "glue").

@@ -9,6 +9,7 @@ void put(ByteWriter& w, const std::string& s) {
 void get(ByteReader& r, std::string& s) {
   std::uint64_t n = 0;
   get(r, n);
+  r.check_count(n, 1);
   s.resize(n);
   r.raw(s.data(), n);
 }

@@ -36,6 +36,13 @@ class ByteReader {
     at_ += n;
   }
   bool done() const { return at_ == bytes_.size(); }
+  std::size_t remaining() const { return bytes_.size() - at_; }
+  // A count read back: each of its items takes at least `item_bytes`, so a count beyond what is
+  // left is a broken answer (a meshing child's, say), refused before anything is allocated.
+  void check_count(std::uint64_t count, std::size_t item_bytes) const {
+    if (item_bytes > 0 && count > remaining() / item_bytes)
+      throw std::runtime_error("bytes: a count of " + std::to_string(count) + " beyond the bytes left (a put/get mismatch)");
+  }
 
  private:
   const std::string& bytes_;
@@ -62,6 +69,7 @@ template <class T>
 void get(ByteReader& r, std::vector<T>& v) {
   std::uint64_t n = 0;
   get(r, n);
+  r.check_count(n, 1);
   v.assign(n, T{});
   for (T& x : v) get(r, x);
 }
@@ -84,6 +92,7 @@ template <class K, class V>
 void get(ByteReader& r, std::map<K, V>& m) {
   std::uint64_t n = 0;
   get(r, n);
+  r.check_count(n, 2);
   m.clear();
   for (std::uint64_t i = 0; i < n; ++i) {
     K k;
@@ -106,6 +115,11 @@ template <class M>
 void get(ByteReader& r, M& m) {
   std::int64_t rows = 0, cols = 0;
   get(r, rows), get(r, cols);
+  if (rows < 0 || cols < 0 || (M::RowsAtCompileTime != Eigen::Dynamic && rows != M::RowsAtCompileTime) ||
+      (M::ColsAtCompileTime != Eigen::Dynamic && cols != M::ColsAtCompileTime))
+    throw std::runtime_error("bytes: a matrix of the wrong size (a put/get mismatch)");
+  r.check_count(static_cast<std::uint64_t>(rows), 1);
+  if (rows > 0) r.check_count(static_cast<std::uint64_t>(cols), static_cast<std::size_t>(rows) * sizeof(typename M::Scalar));
   m.resize(rows, cols);
   for (Eigen::Index i = 0; i < m.rows(); ++i)
     for (Eigen::Index j = 0; j < m.cols(); ++j) get(r, m(i, j));

@@ -14,6 +14,7 @@
 #include <hdf5.h>
 
 #include "core/io/h5_common.h"
+#include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 
 namespace thinlayer {
@@ -128,19 +129,29 @@ void write_attr(hid_t file, const std::string& object_path, const std::string& n
   if (dims.empty() || dims[0] > 0) check(H5Awrite(attr.get(), mem_type, value), "cannot write " + what);
 }
 
+// The user block before HDF5's superblock: the smallest HDF5 allows.
+constexpr hsize_t user_block_bytes = 512;
+
 hid_t create_file(const std::string& tmp_path, const std::string& file_name) {
   const std::string what = "cannot create HDF5 file for '" + file_name + "'";
   Handle access(check(H5Pcreate(H5P_FILE_ACCESS), what), H5Pclose);
   // By default H5Fclose "succeeds" while an object is still open and flushes the file only
   // when that object closes, i.e. after the rename. The "semi" degree makes it an error.
   check(H5Pset_fclose_degree(access.get(), H5F_CLOSE_SEMI), what);
-  return check(H5Fcreate(tmp_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), what);
+  Handle creation(check(H5Pcreate(H5P_FILE_CREATE), what), H5Pclose);
+  check(H5Pset_userblock(creation.get(), user_block_bytes), what);
+  return check(H5Fcreate(tmp_path.c_str(), H5F_ACC_TRUNC, creation.get(), access.get()), what);
 }
 
-// Without this, a crash soon after the rename can leave an empty target on some file systems.
-void flush_to_disk(const std::string& tmp_path, const std::string& file_name) {
+// The marker in the user block (HDF5 leaves it as zeros), then the whole file to disk: without
+// the fsync, a crash soon after the rename can leave an empty target on some file systems.
+void mark_and_flush(const std::string& tmp_path, const std::string& file_name) {
+  std::string block = std::string(results_marker) +
+                      "(an HDF5 file, its superblock at byte 512: thinlayer marks its results here)\n";
+  block.resize(user_block_bytes, '\0');
   const int fd = ::open(tmp_path.c_str(), O_WRONLY | O_CLOEXEC);
-  const bool ok = fd >= 0 && ::fsync(fd) == 0;
+  const bool ok = fd >= 0 && ::pwrite(fd, block.data(), block.size(), 0) == static_cast<ssize_t>(block.size()) &&
+                  ::fsync(fd) == 0;
   const int error = errno;
   if (fd >= 0) ::close(fd);
   if (!ok) throw OutputError("cannot write '" + file_name + "': " + std::strerror(error));
@@ -178,18 +189,29 @@ H5Writer::~H5Writer() {
   unregister_temporary(tmp_path_);
   if (!committed_)
     for (const std::string& folder : folders_) ::rmdir(folder.c_str());  // only if empty: never the user's files
+  unregister_removals(folder_removal_);
+}
+
+void H5Writer::remove_if_abandoned(std::vector<std::string> folders) {
+  std::vector<Removal> removals;
+  for (const std::string& folder : folders) removals.push_back({Removal::Folder, folder});
+  unregister_removals(folder_removal_);
+  folder_removal_ = register_removals(removals);
+  folders_ = std::move(folders);
 }
 
 void H5Writer::commit() {
   const hid_t file_id = file();
   file_ = -1;  // whatever happens next, the destructor must not close it again
   check(H5Fclose(file_id), "cannot close '" + path_ + "'");
-  flush_to_disk(tmp_path_, path_);
+  mark_and_flush(tmp_path_, path_);
   std::error_code ec;
   // Onto the end of any chain of symbolic links: the links stay, the file they name is replaced.
   std::filesystem::rename(tmp_path_, target_, ec);
   if (ec) throw OutputError("cannot write '" + path_ + "': " + ec.message());
   committed_ = true;
+  unregister_removals(folder_removal_);  // the folders now hold the file
+  folder_removal_ = -1;
 }
 
 std::int64_t H5Writer::file() const {

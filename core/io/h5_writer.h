@@ -1,6 +1,11 @@
 #pragma once
 // Writes one HDF5 result file, all or nothing.
 //
+// The file's first 512 bytes are an HDF5 user block holding the marker "thinlayer-results\n"
+// (core/io/output_ownership.h): whether an existing file is thinlayer's is read from those raw
+// bytes, never by parsing it with HDF5 (h5py and HDF5 read the file as usual: the superblock
+// follows the block).
+//
 // The data go to a temporary file next to the target (`<target>.tmp.<pid>.<n>`); commit()
 // closes it and renames it onto the target, which is atomic on POSIX file systems. A writer
 // destroyed without commit() (for instance while an exception unwinds) deletes the temporary
@@ -50,8 +55,9 @@ class H5Writer {
   // Closes the file and moves it onto the target path. No other call is allowed afterwards.
   void commit();
   // Folders made for this file (deepest first): removed, if empty, when the file is abandoned,
-  // so that a failed run leaves no empty output folder behind (SPEC §4).
-  void remove_if_abandoned(std::vector<std::string> folders) { folders_ = std::move(folders); }
+  // so that a failed run leaves no empty output folder behind (SPEC §4); on a signal too (the
+  // handler of core/io/output_target.h removes them, if empty, until the commit).
+  void remove_if_abandoned(std::vector<std::string> folders);
   const std::string& path() const { return path_; }
 
   void group(const std::string& path);
@@ -92,6 +98,7 @@ class H5Writer {
   std::int64_t file_ = -1;  // hid_t, kept as its underlying type so <hdf5.h> stays private
   bool committed_ = false;
   std::vector<std::string> folders_;
+  int folder_removal_ = -1;  // folders_ in the signal handler's table
 };
 
 }  // namespace thinlayer

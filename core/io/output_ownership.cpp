@@ -1,11 +1,12 @@
 #include "core/io/output_ownership.h"
 
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
-#include "core/io/h5_reader.h"
 #include "core/io/output_target.h"
 
 namespace thinlayer {
@@ -21,18 +22,18 @@ std::string head(const std::string& path, std::size_t n) {
   return text;
 }
 
+// Raw bytes, never HDF5: a damaged file must not be parsed here (it crashed HDF5's H5Aread).
 bool is_results_file(const std::string& path) {
-  try {
-    const H5Reader file(path);
-    return file.attr_string("/", "layout") == results_layout_name;
-  } catch (const std::exception&) {  // not HDF5, or no layout: another tool's
-    return false;
-  }
+  return head(path, std::strlen(results_marker)) == results_marker;
 }
 
+// summary.json is a few KB; nlohmann parses at most this much of a file, and never crashes.
+constexpr std::size_t max_summary_bytes = 1u << 20;
+
 bool is_summary(const std::string& path) {
-  std::ifstream in(path);
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  const std::string text = head(path, max_summary_bytes + 1);
+  if (text.size() > max_summary_bytes) return false;
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (!j.is_object()) return false;
   if (j.contains("layout")) return j["layout"] == summary_layout_name;
   return j.contains("checks") && j["checks"].is_array() && j.contains("timings") && j["timings"].is_object();
@@ -83,7 +84,37 @@ void check_replaceable(const std::string& path, OutputKind kind, const std::vect
   }
   if (!force && !is_own(target, kind))
     throw OutputError("cannot write '" + path + "': it exists and is not " + kind_name(kind) +
-                      " (give --force to replace it)");
+                      (kind == OutputKind::Results ? " (give --force to replace it; a results file written before "
+                                                     "thinlayer marked its files needs it once)"
+                                                   : " (give --force to replace it)"));
+}
+
+std::string output_identity(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path target = fs::absolute(resolve_output_target(path));
+  std::error_code ec;
+  const fs::path folder = fs::weakly_canonical(target.parent_path(), ec);
+  return ((ec ? target.parent_path() : folder) / target.filename()).lexically_normal().string();
+}
+
+void check_distinct_outputs(const std::vector<OutputFile>& outputs, const std::vector<InputFile>& inputs) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<std::string, const OutputFile*>> seen;
+  for (const OutputFile& out : outputs) {
+    if (out.path.empty()) continue;
+    const std::string identity = output_identity(out.path);
+    for (const auto& [other, first] : seen)
+      if (other == identity)
+        throw OutputError("cannot write '" + out.path + "': " + first->what + " and " + out.what + " name the same file (" +
+                          identity + "); choose another name");
+    for (const InputFile& input : inputs) {
+      std::error_code ec;
+      if (fs::weakly_canonical(fs::absolute(input.path), ec).string() == identity && !ec)
+        throw OutputError("cannot write '" + out.path + "': it is " + input.what + " (" + input.path +
+                          "), an input of this run; choose another name");
+    }
+    seen.push_back({identity, &out});
+  }
 }
 
 }  // namespace thinlayer

@@ -4,12 +4,18 @@
 // An output never replaces an input of the same run (the scene file, its geometry or mesh,
 // a file the geometry includes): `solve --scene j.json --out j.json` would turn the user's
 // scene into HDF5. Nor does it replace an existing file thinlayer did not write, unless the
-// user says so with --force: a results file is recognised by its root attribute `layout`
-// ("thinlayer-results"), a VTU or CSV by the marker its writer puts at its top, summary.json
-// by its "layout" key (or, written before that key, its "checks" and "timings"). Anything
-// else there (the user's notes, another tool's HDF5, a text file named results.h5) is
-// refused. The comparison is of the files themselves (device and inode, after the target's
+// user says so with --force: a results file is recognised by the marker at its first byte (the
+// HDF5 user block H5Writer reserves, read as raw bytes: an existing file is never parsed by
+// HDF5 here, where a damaged one took the run down with a signal), a VTU or CSV by the marker
+// its writer puts at its top, summary.json by its "layout" key (or, written before that key,
+// its "checks" and "timings"; at most 1 MiB is read). Anything else there (the user's notes,
+// another tool's HDF5, a text file named results.h5, a results file written before the marker)
+// is refused. The comparison is of the files themselves (device and inode, after the target's
 // symbolic links): a link to the scene, or a second name of it, is the scene.
+//
+// Outputs are distinct, whatever --force says: two outputs of one run naming one file (after
+// every symbolic link, a dangling one included: `--out O/r.h5 --vtu O/ln` with O/ln -> r.h5)
+// would each overwrite the other.
 #include <string>
 #include <vector>
 
@@ -19,6 +25,8 @@ enum class OutputKind { Results, Vtu, Summary, Csv };
 
 // Markers of thinlayer's own files.
 constexpr const char* results_layout_name = "thinlayer-results";  // root attribute `layout`
+// A results file's first bytes (its HDF5 user block, core/io/h5_writer.h).
+constexpr const char* results_marker = "thinlayer-results\n";
 constexpr const char* vtu_marker = "<!-- written by thinlayer -->";  // the VTU's second line
 constexpr const char* csv_marker = "# thinlayer";                   // how a CSV's first line starts
 constexpr const char* summary_layout_name = "thinlayer-summary";    // summary.json's "layout"
@@ -32,5 +40,20 @@ struct InputFile {
 // file a write to `path` would replace is one of `inputs`, or exists and is not thinlayer's
 // own output of `kind` (unless `force`).
 void check_replaceable(const std::string& path, OutputKind kind, const std::vector<InputFile>& inputs, bool force);
+
+// The file a write to `path` creates or replaces, as one string for all its names: the end of
+// its chain of symbolic links (dangling or not), in its folder's canonical path. Throws
+// OutputError as resolve_output_target does.
+std::string output_identity(const std::string& path);
+
+// An output, as the user named it: the option ("--out") and the path ("" : not given).
+struct OutputFile {
+  std::string what;
+  std::string path;
+};
+
+// Throws OutputError "cannot write 'PATH': ..." when two of `outputs` are one file, or one is an
+// input of the run (output_identity against the inputs' canonical paths).
+void check_distinct_outputs(const std::vector<OutputFile>& outputs, const std::vector<InputFile>& inputs);
 
 }  // namespace thinlayer

@@ -36,10 +36,29 @@ std::array<char[max_path], max_temporaries> temporaries{};
 std::array<std::atomic<bool>, max_temporaries> in_use{};
 std::atomic<int> signal_child{0};
 
+// Each list: a kind byte ('f' or 'd') and a NUL-terminated path per entry, then a 0 byte.
+constexpr int max_removal_lists = 16;
+constexpr std::size_t removal_list_bytes = 256 << 10;
+std::array<char[removal_list_bytes], max_removal_lists> removal_lists{};
+std::array<std::atomic<bool>, max_removal_lists> removal_in_use{};   // complete: the handler reads it
+std::array<std::atomic<bool>, max_removal_lists> removal_claimed{};  // taken by a caller
+
+void remove_listed(const char* list) {
+  for (const char* p = list; *p;) {
+    const char kind = *p++;
+    if (kind == Removal::File) ::unlink(p);
+    if (kind == Removal::Folder) ::rmdir(p);  // only if empty
+    while (*p) ++p;
+    ++p;
+  }
+}
+
 extern "C" void remove_temporaries_and_die(int signal) {
   if (const int child = signal_child.load(); child > 0) ::kill(child, signal);
   for (int i = 0; i < max_temporaries; ++i)
     if (in_use[i].load()) ::unlink(temporaries[i]);
+  for (int i = 0; i < max_removal_lists; ++i)
+    if (removal_in_use[i].load()) remove_listed(removal_lists[i]);
   ::signal(signal, SIG_DFL);
   ::raise(signal);
 }
@@ -80,6 +99,27 @@ void unregister_temporary(const std::string& path) {
       in_use[i].store(false);
       return;
     }
+}
+
+int register_removals(const std::vector<Removal>& paths) {
+  std::string list;
+  for (const Removal& r : paths) list += std::string(1, r.kind) + r.path + '\0';
+  list += '\0';
+  if (list.size() > removal_list_bytes) throw std::runtime_error("too many paths to remove on a signal");
+  for (int i = 0; i < max_removal_lists; ++i) {
+    bool free = false;
+    if (!removal_claimed[i].compare_exchange_strong(free, true)) continue;  // another list's slot
+    std::memcpy(removal_lists[i], list.data(), list.size());
+    removal_in_use[i].store(true);  // visible to the handler only once whole
+    return i;
+  }
+  throw std::runtime_error("too many lists of paths to remove on a signal");
+}
+
+void unregister_removals(int handle) {
+  if (handle < 0 || handle >= max_removal_lists) return;
+  removal_in_use[handle].store(false);
+  removal_claimed[handle].store(false);
 }
 
 void install_signal_cleanup() {

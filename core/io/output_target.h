@@ -13,6 +13,7 @@
 // leaves the previous result as it was and no `*.tmp.*` beside it.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace thinlayer {
 
@@ -34,8 +35,21 @@ std::string temporary_name_beside(const std::string& target);
 void register_temporary(const std::string& path);
 void unregister_temporary(const std::string& path);
 
-// SIGINT, SIGTERM, SIGHUP and SIGPIPE: remove the registered temporary files, then die of the
-// same signal (so a shell sees the usual status 130 / 143). Also forwards the signal to a child set by
+// Paths the handler removes besides the temporary files: the private staging folder of a scene's
+// geometry (cases/scene/scene_sources.h), the output folders a run made (SPEC §4: no empty output
+// folder is left behind, a signal included). A File is unlinked; a Folder is removed only if it
+// is empty, so a user's file in it is never touched. Given in removal order (files first, the
+// deepest folders first). At most 16 lists at a time, 256 KiB of paths each; more throws
+// std::runtime_error. The owner removes its paths itself when done, then unregisters them.
+struct Removal {
+  enum Kind : char { File = 'f', Folder = 'd' } kind = File;
+  std::string path;
+};
+int register_removals(const std::vector<Removal>& paths);
+void unregister_removals(int handle);  // -1: none
+
+// SIGINT, SIGTERM, SIGHUP and SIGPIPE: remove the registered temporary files and removals, then
+// die of the same signal (so a shell sees the usual status 130 / 143). Also forwards the signal to a child set by
 // set_signal_child (the report's interpreter), which cleans up its own files.
 void install_signal_cleanup();
 void set_signal_child(int pid);  // 0: none

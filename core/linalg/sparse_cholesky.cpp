@@ -1,6 +1,7 @@
 #include "core/linalg/sparse_cholesky.h"
 
 #include <algorithm>
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -55,6 +56,13 @@ struct SparseCholesky::Impl {
     // As Eigen's CholmodSupernodalLLT (used here before): always supernodal, factor left as is.
     common.supernodal = CHOLMOD_SUPERNODAL;
     common.final_asis = 1;
+    // CHOLMOD's own printing of an error would be a second line on stderr; the status says it.
+    common.print = 0;
+  }
+
+  // Out of memory is std::bad_alloc, whatever the library: the command names the phase (exit 2).
+  void throw_if_out_of_memory() const {
+    if (common.status == CHOLMOD_OUT_OF_MEMORY || common.status == CHOLMOD_TOO_LARGE) throw std::bad_alloc();
   }
   ~Impl() {
     if (L) cholmod_free_factor(&L, &common);
@@ -64,11 +72,13 @@ struct SparseCholesky::Impl {
   // Symbolic analysis with CHOLMOD's default orderings (postordered, as inverse_block needs).
   void analyze(cholmod_sparse* A) {
     L = cholmod_analyze(A, &common);
+    throw_if_out_of_memory();
     if (!L) throw std::runtime_error("SparseCholesky: CHOLMOD analysis failed (status " + std::to_string(common.status) + ")");
   }
 
   void factorize(cholmod_sparse* A) {
     cholmod_factorize(A, L, &common);
+    throw_if_out_of_memory();
     if (common.status < 0)
       throw std::runtime_error("SparseCholesky: CHOLMOD factorisation failed (status " + std::to_string(common.status) +
                                ")");
@@ -82,6 +92,7 @@ struct SparseCholesky::Impl {
   void solve(const double* B, Eigen::Index rows, Eigen::Index cols, double* X) {
     cholmod_dense b = view(B, rows, cols);
     cholmod_dense* x = cholmod_solve(CHOLMOD_A, L, &b, &common);
+    throw_if_out_of_memory();
     if (!x) throw std::runtime_error("SparseCholesky: solve failed (CHOLMOD status " + std::to_string(common.status) + ")");
     std::copy_n(static_cast<const double*>(x->x), rows * cols, X);
     cholmod_free_dense(&x, &common);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <new>
 #include <stdexcept>
 #include <vector>
 
@@ -63,13 +64,16 @@ bool SparseLU::factor(const Eigen::SparseMatrix<double>& A) {
   if (!m.symbolic) {
     m.Ap.assign(m.scaled.outerIndexPtr(), m.scaled.outerIndexPtr() + n + 1);
     m.Ai.assign(m.scaled.innerIndexPtr(), m.scaled.innerIndexPtr() + m.scaled.nonZeros());
-    if (umfpack_di_symbolic(n, n, m.Ap.data(), m.Ai.data(), m.scaled.valuePtr(), &m.symbolic, m.control, m.info) !=
-        UMFPACK_OK)
-      throw std::runtime_error("SparseLU: UMFPACK's symbolic analysis failed");
+    const int symbolic =
+        umfpack_di_symbolic(n, n, m.Ap.data(), m.Ai.data(), m.scaled.valuePtr(), &m.symbolic, m.control, m.info);
+    // Out of memory is std::bad_alloc, whatever the library: the command names the phase (exit 2).
+    if (symbolic == UMFPACK_ERROR_out_of_memory) throw std::bad_alloc();
+    if (symbolic != UMFPACK_OK) throw std::runtime_error("SparseLU: UMFPACK's symbolic analysis failed");
   }
   if (m.numeric) umfpack_di_free_numeric(&m.numeric);
   const int status =
       umfpack_di_numeric(m.Ap.data(), m.Ai.data(), m.scaled.valuePtr(), m.symbolic, &m.numeric, m.control, m.info);
+  if (status == UMFPACK_ERROR_out_of_memory) throw std::bad_alloc();
   rcond_ = std::isfinite(m.info[UMFPACK_RCOND]) ? m.info[UMFPACK_RCOND] : 0.0;
   // A pivot below the unit round-off times the largest is one that rounding alone could have
   // made of an exact zero (the LU's backward error is of that order): singular to working

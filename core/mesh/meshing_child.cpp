@@ -1,7 +1,12 @@
 #include "core/mesh/meshing_child.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <csignal>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <initializer_list>
@@ -9,6 +14,8 @@
 
 #include <fcntl.h>
 #include <linux/sched.h>
+#include <malloc.h>
+#include <poll.h>
 #include <seccomp.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -17,29 +24,77 @@
 
 #include "core/io/output_target.h"
 #include "core/mesh/gmsh_session.h"
+#include "core/mesh/read_box.h"
 
 namespace thinlayer {
 
 namespace {
 
-// The child's end of the pipe, for its terminate handler.
-int answer_fd = -1;
-long long memory_limit = 0;
+// The answer travels in frames: a type byte ('P' a phase, 'R' the result, 'E' an error: 'I' an
+// input error or 'G' anything else, then the message), its payload's length (8 bytes), the payload.
+constexpr std::size_t frame_header = 1 + sizeof(std::uint64_t);
+// The most the parent accepts from a child: a 2·10⁶-node mesh is about 150 MB of answer.
+constexpr std::uint64_t max_answer_bytes = 2ULL << 30;
 
-void write_all(int fd, const std::string& bytes) {
-  for (std::size_t done = 0; done < bytes.size();) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+// The child's side (set in run_child; -1 in any other process).
+int answer_fd = -1;
+long long memory_limit = 0;        // the child's address-space limit, bytes
+bool memory_inherited = false;     // the limit is the lower one this process inherited
+std::string phase_now;             // for the child's own messages
+long long base_address_space = 0;  // at the fork (/proc/self/statm), bytes
+std::size_t base_heap = 0;         // malloc's heap at the fork (mallinfo2), bytes
+std::string bounded_why;           // the message of the bounded step under way ("" if none)
+char alarm_frame[4096];            // that message as a frame, for the SIGALRM handler
+std::size_t alarm_frame_size = 0;
+
+void write_all(int fd, const char* data, std::size_t size) {
+  for (std::size_t done = 0; done < size;) {
+    const ssize_t n = ::write(fd, data + done, size - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) return;  // the parent is gone: nobody to tell
     done += static_cast<std::size_t>(n);
   }
 }
 
-std::string gib(long long bytes) { return std::to_string(bytes >> 30) + " GiB"; }
+std::string frame(char type, const std::string& payload) {
+  const std::uint64_t size = payload.size();
+  std::string f;
+  f.reserve(frame_header + payload.size());
+  f.push_back(type);
+  f.append(reinterpret_cast<const char*>(&size), sizeof size);
+  f.append(payload);
+  return f;
+}
 
-// 'E', then 'I' (an error about the input) or 'G' (anything else), then the message.
+// An error's payload: 'I' (about the input) or 'G' (anything else), then the message.
+std::string error_payload(bool input, const std::string& message) {
+  std::string p;
+  p.reserve(1 + message.size());
+  p.push_back(input ? 'I' : 'G');
+  p.append(message);
+  return p;
+}
+
+void send(char type, const std::string& payload) {
+  const std::string f = frame(type, payload);
+  write_all(answer_fd, f.data(), f.size());
+}
+
+std::string gib(long long bytes) {
+  char text[32];
+  const double g = static_cast<double>(bytes) / (1LL << 30);
+  std::snprintf(text, sizeof text, g == std::floor(g) ? "%.0f GiB" : "%.2g GiB", g);
+  return text;
+}
+
+std::string while_phase(const std::string& phase) { return phase.empty() ? "" : " while " + phase; }
+
+std::string memory_limit_text() {
+  return gib(memory_limit) + (memory_inherited ? ", the limit this process inherited (ulimit -v)" : "");
+}
+
 [[noreturn]] void answer_error(bool input, const std::string& message) {
-  write_all(answer_fd, std::string("E") + (input ? 'I' : 'G') + message);
+  send('E', error_payload(input, message));
   ::_exit(70);
 }
 
@@ -49,7 +104,8 @@ std::string gib(long long bytes) { return std::to_string(bytes >> 30) + " GiB"; 
   try {
     throw;
   } catch (const std::bad_alloc&) {
-    answer_error(false, "gmsh ran out of its memory limit (" + gib(memory_limit) + ")");
+    if (!bounded_why.empty()) answer_error(true, bounded_why);
+    answer_error(false, "gmsh ran out of its memory limit (" + memory_limit_text() + ")" + while_phase(phase_now));
   } catch (const std::invalid_argument& e) {  // InputError is one too
     answer_error(true, e.what());
   } catch (const std::exception& e) {
@@ -57,7 +113,7 @@ std::string gib(long long bytes) { return std::to_string(bytes >> 30) + " GiB"; 
   } catch (const std::string& message) {
     answer_error(false, "gmsh: " + message);
   } catch (...) {
-    answer_error(false, "gmsh failed (an exception of unknown type)");
+    answer_error(false, "gmsh failed (an exception of unknown type)" + while_phase(phase_now));
   }
 }
 
@@ -65,7 +121,12 @@ std::string gib(long long bytes) { return std::to_string(bytes >> 30) + " GiB"; 
 // called gmsh: the runtime calls std::terminate with it still current.
 [[noreturn]] void answer_from_terminate() {
   if (std::current_exception()) answer_current_exception();
-  answer_error(false, "gmsh stopped (std::terminate)");
+  answer_error(false, "gmsh stopped (std::terminate)" + while_phase(phase_now));
+}
+
+extern "C" void answer_bounded_alarm(int) {
+  write_all(answer_fd, alarm_frame, alarm_frame_size);
+  ::_exit(70);
 }
 
 // The system calls that run, start, write, remove or signal anything fail with EPERM.
@@ -114,7 +175,35 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
   ::setrlimit(resource, &limit);
 }
 
-// In the child: stdio on /dev/null, the pipe as fd 3 and nothing else, the limits, the filter.
+// The address-space limit: the one asked for, or the lower hard limit this process inherited.
+void limit_memory(long long asked) {
+  rlimit inherited{};
+  ::getrlimit(RLIMIT_AS, &inherited);
+  memory_limit = asked;
+  memory_inherited = inherited.rlim_max != RLIM_INFINITY && static_cast<long long>(inherited.rlim_max) < asked;
+  if (memory_inherited) memory_limit = static_cast<long long>(inherited.rlim_max);
+  set_limit(RLIMIT_AS, static_cast<rlim_t>(memory_limit), static_cast<rlim_t>(memory_limit));
+}
+
+// The address space the child holds (what RLIMIT_AS counts), from /proc before the box and
+// malloc's growth after (the box may deny /proc).
+long long address_space_now() {
+  const struct mallinfo2 m = ::mallinfo2();
+  return base_address_space + static_cast<long long>(m.arena + m.hblkhd) - static_cast<long long>(base_heap);
+}
+
+void measure_base_address_space() {
+  long long pages = 0;
+  if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(statm, "%lld", &pages) != 1) pages = 0;
+    std::fclose(statm);
+  }
+  base_address_space = pages * ::sysconf(_SC_PAGESIZE);
+  const struct mallinfo2 m = ::mallinfo2();
+  base_heap = m.arena + m.hblkhd;
+}
+
+// In the child: stdio on /dev/null, the pipe as fd 3 and nothing else, the limits, the boxes.
 [[noreturn]] void run_child(int pipe_write, const std::function<std::string()>& work, const MeshingChildLimits& limits,
                             pid_t parent) {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -126,31 +215,30 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
   ::dup2(pipe_write, 3);
   ::close_range(4, ~0U, 0);
   answer_fd = 3;
-  memory_limit = limits.memory_limit_bytes;
   std::set_terminate(answer_from_terminate);
-  set_limit(RLIMIT_AS, limits.memory_limit_bytes, limits.memory_limit_bytes);
+  measure_base_address_space();
+  limit_memory(limits.memory_limit_bytes);
   set_limit(RLIMIT_CPU, limits.cpu_limit_s, limits.cpu_limit_s + 5);  // SIGXCPU, then SIGKILL
   set_limit(RLIMIT_CORE, 0, 0);
   set_limit(RLIMIT_FSIZE, 0, 0);
+  if (!limits.read_folder.empty()) {
+    if (::chdir(limits.read_folder.c_str()) != 0)
+      answer_error(false, "cannot enter the staging folder " + limits.read_folder + ": gmsh was not run");
+    try {
+      confine_reads_to(limits.read_folder);
+    } catch (const std::exception& e) {
+      answer_error(false, std::string(e.what()) + ": gmsh was not run");
+    }
+  }
   if (!confine()) answer_error(false, "cannot confine the meshing process (seccomp): gmsh was not run");
   try {
     const std::string answer = work();
-    write_all(answer_fd, "R" + answer);
+    meshing_phase("handing the meshes back");
+    send('R', answer);
   } catch (...) {
     answer_current_exception();
   }
   ::_exit(0);
-}
-
-std::string read_all(int fd) {
-  std::string bytes;
-  char buffer[1 << 16];
-  while (true) {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return bytes;
-    bytes.append(buffer, static_cast<std::size_t>(n));
-  }
 }
 
 int wait_for(pid_t child) {
@@ -160,12 +248,101 @@ int wait_for(pid_t child) {
   return status;
 }
 
+// What the parent has read of the child's frames.
+struct Answer {
+  std::string phase;   // the last phase the child named
+  char kind = 0;       // 'R' or 'E' once the answer is in
+  std::string payload;
+  std::string pending;  // bytes of a frame not yet complete
+  std::uint64_t total = 0;
+  bool too_long = false;
+
+  void take(const char* data, std::size_t size) {
+    total += size;
+    if (total > max_answer_bytes) {
+      too_long = true;
+      return;
+    }
+    pending.append(data, size);
+    std::size_t at = 0;
+    while (pending.size() - at >= frame_header) {
+      std::uint64_t length = 0;
+      std::memcpy(&length, pending.data() + at + 1, sizeof length);
+      if (length > pending.size() - at - frame_header) break;
+      const char type = pending[at];
+      std::string body = pending.substr(at + frame_header, length);
+      at += frame_header + length;
+      if (type == 'P') phase = std::move(body);
+      if ((type == 'R' || type == 'E') && kind == 0) kind = type, payload = std::move(body);
+    }
+    pending.erase(0, at);
+  }
+};
+
+enum class Ending { Closed, Clock, TooLong };
+
+// Reads the child's frames until it closes the pipe, the clock runs out, or it says too much.
+Ending read_answer(int fd, double wall_limit_s, Answer& answer) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wall_limit_s);
+  char buffer[1 << 16];
+  while (true) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return Ending::Clock;
+    pollfd p{fd, POLLIN, 0};
+    const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000 * 1000)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) continue;  // the loop checks the clock
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return Ending::Closed;
+    answer.take(buffer, static_cast<std::size_t>(n));
+    if (answer.too_long) return Ending::TooLong;
+  }
+}
+
+std::string seconds_text(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
+
 }  // namespace
+
+void meshing_phase(const std::string& phase) {
+  if (answer_fd < 0) return;
+  phase_now = phase;
+  send('P', phase);
+}
+
+void run_bounded(const std::string& phase, long long memory_bytes, unsigned seconds, const std::string& why,
+                 const std::function<void()>& step) {
+  if (answer_fd < 0) return step();
+  meshing_phase(phase);
+  const std::string alarm_answer = frame('E', error_payload(true, why.substr(0, sizeof alarm_frame - frame_header - 1)));
+  std::memcpy(alarm_frame, alarm_answer.data(), alarm_answer.size());
+  alarm_frame_size = alarm_answer.size();
+  bounded_why = why;
+  const long long soft = std::min(memory_limit, address_space_now() + memory_bytes);
+  set_limit(RLIMIT_AS, static_cast<rlim_t>(soft), static_cast<rlim_t>(memory_limit));
+  ::signal(SIGALRM, answer_bounded_alarm);
+  ::alarm(std::max(seconds, 1u));
+  try {
+    step();
+  } catch (const std::bad_alloc&) {
+    answer_error(true, why);
+  }
+  ::alarm(0);
+  ::signal(SIGALRM, SIG_DFL);
+  set_limit(RLIMIT_AS, static_cast<rlim_t>(memory_limit), static_cast<rlim_t>(memory_limit));
+  bounded_why.clear();
+}
 
 std::string run_in_meshing_child(const std::function<std::string()>& work, const MeshingChildLimits& limits) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) throw MeshingChildError(std::string("cannot start gmsh's process: ") + std::strerror(errno), false);
   const pid_t parent = ::getpid();
+  // gmsh starts here, outside the box: the child shares it as it was (its start reads no file).
+  ensure_gmsh_initialized();
   const pid_t child = fork_with_gmsh_lock();
   if (child < 0) {
     const int error = errno;
@@ -175,19 +352,29 @@ std::string run_in_meshing_child(const std::function<std::string()>& work, const
   if (child == 0) run_child(fds[1], work, limits, parent);
   ::close(fds[1]);
   set_signal_child(child);  // SIGINT/SIGTERM of this process reach the child too
-  const std::string answer = read_all(fds[0]);
+  Answer answer;
+  const Ending ending = read_answer(fds[0], limits.wall_limit_s, answer);
+  if (ending != Ending::Closed) ::kill(child, SIGKILL);
   ::close(fds[0]);
   const int status = wait_for(child);
   set_signal_child(0);
-  if (answer.size() >= 1 && answer[0] == 'R' && WIFEXITED(status) && WEXITSTATUS(status) == 0) return answer.substr(1);
-  if (answer.size() >= 2 && answer[0] == 'E') throw MeshingChildError(answer.substr(2), answer[1] == 'I');
+  const std::string when = while_phase(answer.phase);
+  if (ending == Ending::Clock)
+    throw MeshingChildError("gmsh did not finish within the wall-clock limit of " + seconds_text(limits.wall_limit_s) +
+                                " s (--mesh-timeout)" + when + "; a loop in the geometry?",
+                            false);
+  if (ending == Ending::TooLong) throw MeshingChildError("gmsh's process answered more than 2 GiB" + when, false);
+  if (answer.kind == 'R' && WIFEXITED(status) && WEXITSTATUS(status) == 0) return answer.payload;
+  if (answer.kind == 'E' && !answer.payload.empty())
+    throw MeshingChildError(answer.payload.substr(1), answer.payload[0] == 'I');
   if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL))
     throw MeshingChildError("gmsh ran out of its CPU time limit (" + std::to_string(limits.cpu_limit_s) +
-                                " s; a loop in the geometry?) or was killed",
+                                " s; a loop in the geometry?) or was killed" + when,
                             false);
   if (WIFSIGNALED(status))
-    throw MeshingChildError(std::string("gmsh crashed (") + strsignal(WTERMSIG(status)) + ")", false);
-  throw MeshingChildError("gmsh ended without a mesh (exit status " + std::to_string(WEXITSTATUS(status)) + ")", false);
+    throw MeshingChildError(std::string("gmsh crashed (") + strsignal(WTERMSIG(status)) + ")" + when, false);
+  throw MeshingChildError("gmsh ended without a mesh (exit status " + std::to_string(WEXITSTATUS(status)) + ")" + when,
+                          false);
 }
 
 }  // namespace thinlayer

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <new>
+#include <optional>
 
 #include "cases/scene/scene_mesh_child.h"
 #include "core/io/output_ownership.h"
@@ -13,6 +15,7 @@
 #include "core/io/vtu_writer.h"
 #include "studies/cli/options.h"
 #include "studies/cli/results_file.h"
+#include "studies/tools/run_phase.h"
 #include "studies/cli/scene_report.h"
 #include "studies/drivers/scene_file_study.h"
 #include "studies/drivers/scene_solve_output.h"
@@ -26,12 +29,14 @@ namespace {
 struct SceneSolveInput : SolveRun {
   std::string scene, mode = "limit";
   std::size_t max_nodes = SceneSpec{}.max_nodes;
+  double mesh_timeout_s = SceneSpec{}.mesh_timeout_s;
   double eps = 0;  // 0: an engineer's glue at its own thickness (checked with the scene)
 };
 
 // What applies to a scene file's solve; the bar's and the dovetail's options do not.
 const std::set<std::string> scene_solve_options = {"scene", "mode", "eps", "out", "vtu", "json", "verbose",
-                                                   "solver", "tolerance", "max-iterations", "omega", "max-nodes", "force"};
+                                                   "solver", "tolerance", "max-iterations", "omega", "max-nodes", "mesh-timeout",
+                                                   "force"};
 
 // --max-nodes N (N >= 1), or the default.
 std::size_t max_nodes(const CLI::App& c, long long given_value) {
@@ -40,12 +45,20 @@ std::size_t max_nodes(const CLI::App& c, long long given_value) {
   return static_cast<std::size_t>(given_value);
 }
 
+// --mesh-timeout S (0 < S <= 1e6 s), or the default.
+double mesh_timeout(const CLI::App& c, double given_value) {
+  if (!given(c, "mesh-timeout")) return SceneSpec{}.mesh_timeout_s;
+  if (!(given_value > 0) || !(given_value <= 1e6)) throw std::invalid_argument("--mesh-timeout must be in (0, 1e6] seconds");
+  return given_value;
+}
+
 SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   require_only(c, scene_solve_options, "a scene file (--scene)");
   SceneSolveInput in;
   in.scene = a.scene;
   if (in.scene.empty()) throw std::invalid_argument("--scene needs a file");
   in.max_nodes = max_nodes(c, a.max_nodes);
+  in.mesh_timeout_s = mesh_timeout(c, a.mesh_timeout);
   in.mode = given(c, "mode") ? a.mode : "limit";
   if (given(c, "eps")) {  // without it, an engineer's glue's own thickness (checked with the scene)
     in.eps = a.eps;
@@ -63,10 +76,10 @@ void write_results(const std::string& path, const SceneFileScene& scene, const S
   out->commit();
 }
 
-// One line on stderr, the exit status of its kind.
+// One line on stderr, the exit status of its kind (out of memory: 2, naming the phase).
 int fail(const std::string& command, const std::exception& e, int status) {
-  std::cerr << "thinlayer " << command << ": " << e.what() << "\n";
-  return status;
+  std::cerr << "thinlayer " << command << ": " << failure_text(e) << "\n";
+  return dynamic_cast<const std::bad_alloc*>(&e) ? 2 : status;
 }
 
 }  // namespace
@@ -77,15 +90,19 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   std::unique_ptr<SceneFileBulk> bulk;
   try {
     in = parse_solve(command, args);
+    RunPhase reading("reading the scene file " + in.scene);
     SceneSpec spec = read_scene_spec(in.scene);
     spec.max_nodes = in.max_nodes;
-    // The outputs first: never one of the run's inputs, never a file thinlayer did not write
-    // (unless --force), and writable; all before any work.
+    spec.mesh_timeout_s = in.mesh_timeout_s;
+    // The outputs first: never one of the run's inputs nor each other, never a file thinlayer did
+    // not write (unless --force), and writable; all before any work.
     inputs = scene_inputs(spec);
+    check_distinct_outputs({{"--out", in.out}, {"--vtu", in.vtu}}, inputs);
     if (!in.out.empty()) check_replaceable(in.out, OutputKind::Results, inputs, in.force);
     if (!in.vtu.empty()) check_replaceable(in.vtu, OutputKind::Vtu, inputs, in.force);
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
+    RunPhase meshing("meshing and checking the scene " + in.scene);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     check_scene_eps(*bulk, in.mode, in.eps);
   } catch (const std::invalid_argument& e) {
@@ -96,10 +113,13 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     return fail("solve", e, 2);
   }
   try {
+    std::optional<RunPhase> phase(std::in_place, "solving the " + in.mode + " mode of " + in.scene);
     const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options, in.eps)
                                                 : solve_scene_file_layer(*bulk, in.eps, in.solver, in.options);
     if (!in.json) print_scene_solve(*bulk, in.mode, in.eps, s);
+    phase.emplace("writing " + in.out);
     if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force});
+    phase.emplace("writing " + in.vtu);
     if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
@@ -129,7 +149,8 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     if (study != "convergence" && study != "validity")
       throw std::invalid_argument("--scene applies to study convergence and study validity only");
     if (!refuse_unless_one_process("study " + study + " --scene")) return 2;
-    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes", "force"};
+    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes", "mesh-timeout",
+                                     "force"};
     if (study == "validity") allowed.insert("bisection-steps");
     require_only(c, allowed, "study " + study + " --scene");
     const std::string scene = a.scene;
@@ -144,10 +165,14 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     options.bisection_steps = given(c, "bisection-steps") ? a.bisection_steps : 2;
     if (options.bisection_steps < 0 || options.bisection_steps > 20)
       throw std::invalid_argument("--bisection-steps must be in 0..20");
+    RunPhase reading("reading the scene file " + scene);
     SceneSpec spec = read_scene_spec(scene);
     spec.max_nodes = max_nodes(c, a.max_nodes);
+    spec.mesh_timeout_s = mesh_timeout(c, a.mesh_timeout);
     rules = {scene_inputs(spec), a.force};
     if (!out_dir.empty()) {  // the study's files in DIR, before the study (its report checks its own folder)
+      check_distinct_outputs({{"results.h5", out_dir + "/results.h5"}, {"bondline_fields.csv", out_dir + "/bondline_fields.csv"}},
+                             rules.inputs);
       check_replaceable(out_dir + "/results.h5", OutputKind::Results, rules.inputs, rules.force);
       check_replaceable(out_dir + "/bondline_fields.csv", OutputKind::Csv, rules.inputs, rules.force);
     }
@@ -159,12 +184,14 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     }
     if (!spec.has_layer())
       throw std::invalid_argument("scene '" + spec.name + "' gives a limit law only ('law'): it has no layer mode to study");
+    RunPhase meshing("meshing and checking the scene " + scene);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     for (double e : scene_study_grid(*bulk, options)) check_layer_mode(*bulk, e);
   } catch (const std::exception& e) {
     return fail("study", e, 2);
   }
   try {
+    RunPhase studying("running study " + study + " on " + a.scene);
     auto out = open_results(out_dir, rules);
     if (out_dir.empty()) std::printf("(no --out DIR: the results are printed, not saved)\n");
     const SceneStudyResult r = run_scene_study(*bulk, options, out.get());

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +24,7 @@
 #include "studies/tools/format.h"
 #include "studies/cli/options.h"
 #include "studies/cli/results_file.h"
+#include "studies/tools/run_phase.h"
 
 namespace thinlayer {
 
@@ -108,6 +110,7 @@ SolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   in.case_name = a.case_name;
   if (!given(c, "case")) throw std::invalid_argument("--case is required (bar or dovetail)");
   if (given(c, "max-nodes")) throw std::invalid_argument("--max-nodes applies to a scene file (--scene) only");
+  if (given(c, "mesh-timeout")) throw std::invalid_argument("--mesh-timeout applies to a scene file (--scene) only");
   for (const auto& name : in.case_name == "bar" ? dovetail_only : bar_only)
     if (given(c, name)) throw std::invalid_argument("--" + name + " does not apply to the " + in.case_name);
   in.mode = given(c, "mode") ? a.mode : "limit";
@@ -358,12 +361,16 @@ CLI::App* declare_solve(CLI::App& thinlayer, SolveArgs& a) {
                 "a JSON scene naming the physical groups of a gmsh .geo or .msh (README,\n"
                 "\"Your own joint\"; cases/lap_joint/lap_joint.json); with it only --mode,\n"
                 "--eps (mm), --out, --vtu, --json, --solver, --tolerance, --max-iterations,\n"
-                "--omega, --verbose, --force and --max-nodes apply")
+                "--omega, --verbose, --force, --max-nodes and --mesh-timeout apply")
       ->type_name("FILE.json")->group("Scene files (your own joint)");
   c->add_option("--max-nodes", a.max_nodes,
                 "refuse a scene whose mesh would have more nodes than N, before meshing\n"
                 "(estimated from the geometry and mesh_size; default 2000000)")
       ->type_name("N")->transform(integer("max-nodes"))->group("Scene files (your own joint)");
+  c->add_option("--mesh-timeout", a.mesh_timeout,
+                "stop gmsh after S seconds of wall clock, reading and meshing the scene's\n"
+                "geometry (default 600; a Sleep or a loop in a .geo ends there)")
+      ->type_name("S")->check(decimal("mesh-timeout"))->group("Scene files (your own joint)");
   c->footer(
       "Numbers are decimal (1e-3, 0.5, inf where a value may be infinite); no hex, no blanks.\n"
       "Exit status: 0 converged, 1 not converged (the result is still written), 2 bad input,\n"
@@ -387,7 +394,9 @@ int command_solve(const CLI::App& command, const SolveArgs& args) {
     if (!in.vtu.empty()) check_replaceable(in.vtu, OutputKind::Vtu, {}, in.force);
     if (!in.out.empty()) H5Writer probe(in.out);  // abandoned at once: nothing is left behind
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
+    std::optional<RunPhase> phase(std::in_place, "solving the " + in.case_name);
     const auto [record, report] = solve_scene(in);
+    phase.emplace("writing the results");
     if (!in.out.empty()) {
       write_scene_file(in.out, record, {{}, in.force});
       say("  wrote %s\n", in.out.c_str());
@@ -408,6 +417,9 @@ int command_solve(const CLI::App& command, const SolveArgs& args) {
     return 2;
   } catch (const OutputError& e) {
     std::cerr << "thinlayer solve: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc& e) {
+    std::cerr << "thinlayer solve: " << failure_text(e) << "\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "thinlayer solve: " << e.what() << "\n";

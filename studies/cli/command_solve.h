@@ -14,7 +14,7 @@ namespace thinlayer {
 struct SolveArgs {
   std::string case_name, mode, law_case, solver, out, vtu, element, diagonal, plane, scene;
   double eps = 0, lambda_bar = 0, mu_bar = 0, friction = 0, scale = 0, gamma = 0, delta = 0, h_interface = 0,
-         h_far = 0, distortion = 0, load_scale = 0, tolerance = 0, omega = 0;
+         h_far = 0, distortion = 0, load_scale = 0, tolerance = 0, omega = 0, mesh_timeout = 0;
   int row = 0, nx = 0, ny = 0, layer_elements = 0, max_iterations = 0;
   long long max_nodes = 0;
   NumberList friction_path;

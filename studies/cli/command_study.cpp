@@ -13,6 +13,7 @@
 #include <set>
 
 #include "core/io/h5_writer.h"
+#include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 #include "studies/cli/command_scene.h"
 #include "studies/drivers/scene_file_study.h"
@@ -36,6 +37,7 @@
 #include "studies/drivers/thresholds_study.h"
 #include "studies/drivers/timing_study.h"
 #include "studies/drivers/validity_study.h"
+#include "studies/tools/run_phase.h"
 
 namespace thinlayer {
 
@@ -269,6 +271,10 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
                      "with --scene: refuse a mesh of more nodes than N, before meshing\n"
                      "(estimated from the geometry and mesh_size; default 2000000)")
             ->type_name("N")->transform(integer("max-nodes")));
+  group(c.add_option("--mesh-timeout", a.mesh_timeout,
+                     "with --scene: stop gmsh after S seconds of wall clock on each mesh\n"
+                     "(default 600)")
+            ->type_name("S")->check(decimal("mesh-timeout")));
 }
 
 }  // namespace
@@ -307,14 +313,15 @@ CLI::App* declare_study(CLI::App& thinlayer, StudyArgs& a) {
       "\n"
       "Your own joint: study convergence --scene FILE.json, study validity --scene FILE.json run S2\n"
       "and S3 on a scene file (README, \"Your own joint\"); options --out, --eps LIST (mm), --tolerance\n"
-      "(default 1e-10 there), --threads, --quiet, --max-nodes and (validity) --bisection-steps.");
+      "(default 1e-10 there), --threads, --quiet, --max-nodes, --mesh-timeout and (validity)\n"
+      "--bisection-steps.");
   c->formatter(help_formatter("usage: thinlayer study NAME [--out DIR] [options]"));
   c->set_help_flag("-h,--help", "this help");
   c->allow_extras();
   c->add_option("name", a.name)->check(one_of("study", study_names))->group("");
   std::set<std::string> all;
   for (const auto& [study, options] : study_options) all.insert(options.begin(), options.end());
-  all.insert({"relaxation-cap", "friction-path", "scene", "max-nodes"});
+  all.insert({"relaxation-cap", "friction-path", "scene", "max-nodes", "mesh-timeout"});
   declare_study_options(*c, a, all);
   c->footer("Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input.");
   return c;
@@ -361,6 +368,7 @@ int command_study(const CLI::App& command, const StudyArgs& a) {
     const auto start = std::chrono::steady_clock::now();
     auto out = open_results_on_root(in.out_dir, {{}, in.force});
     if (in.out_dir.empty()) std::printf("(no --out DIR: the results are printed, not saved)\n");
+    const RunPhase phase("running study " + name);
     std::vector<Check> checks;
     if (name == "table3") checks = run_table3_study(in.table3, out.get());
     else if (name == "dovetail") checks = run_dovetail_study(in.dovetail, out.get());
@@ -395,6 +403,9 @@ int command_verify(const CLI::App& command, const StudyArgs& a) {
     return 2;
   }
   try {
+    // Its two files distinct after every link (a dangling summary.json -> results.h5 included).
+    check_distinct_outputs({{"results.h5", in.out_dir + "/results.h5"}, {"summary.json", in.out_dir + "/summary.json"}},
+                           {});
     auto out = open_results(in.out_dir, {{}, in.force});
     const std::string summary = in.out_dir + "/summary.json";
     check_replaceable(summary, OutputKind::Summary, {}, in.force);  // before the studies, not after
@@ -402,6 +413,7 @@ int command_verify(const CLI::App& command, const StudyArgs& a) {
     std::vector<Check> checks;
     auto timed = [&](const std::string& name, const std::function<std::vector<Check>()>& study) {
       std::cerr << "[verify] study " << name << "\n";
+      const RunPhase phase("running study " + name);
       const auto start = std::chrono::steady_clock::now();
       const std::vector<Check> c = study();
       checks.insert(checks.end(), c.begin(), c.end());
@@ -426,7 +438,7 @@ int command_verify(const CLI::App& command, const StudyArgs& a) {
     std::printf("\nwrote %s, %s and %s/index.html\n", out->path().c_str(), summary.c_str(), report_dir.c_str());
     return report_checks(checks);
   } catch (const std::exception& e) {
-    std::cerr << "thinlayer verify: " << e.what() << "\n";
+    std::cerr << "thinlayer verify: " << failure_text(e) << "\n";
     return 2;
   }
 }

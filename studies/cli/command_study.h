@@ -12,7 +12,7 @@ namespace thinlayer {
 struct StudyArgs {
   std::string name, out, cases, scene;
   NumberList eps, rate_eps, friction_path;
-  double tolerance = 0;
+  double tolerance = 0, mesh_timeout = 0;
   int repeats = 0, relaxation_cap = 0, threads = 0, bisection_steps = 0;
   long long max_nodes = 0;
   bool quick = false, quiet = false, force = false;

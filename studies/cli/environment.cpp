@@ -12,6 +12,8 @@
 
 #include <sys/wait.h>
 
+#include "core/mesh/read_box.h"
+
 namespace thinlayer {
 namespace {
 
@@ -88,6 +90,8 @@ std::map<std::string, std::string> environment_info() {
   info["hdf5"] = dotted(H5_VERS_MAJOR, H5_VERS_MINOR, H5_VERS_RELEASE);
   info["build_type"] = build_type();
   info["commit"] = commit();
+  // The meshing child's file-system box on this kernel (core/mesh/read_box.h).
+  info["gmsh_read_box"] = read_box_description();
   return info;
 }
 

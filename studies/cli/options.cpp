@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/io/output_ownership.h"
+
 namespace thinlayer {
 
 namespace {
@@ -52,10 +54,8 @@ void parse_solve_run(const CLI::App& command, const SolveArgs& a, SolveRun& run)
   run.out = a.out;
   run.vtu = a.vtu;
   run.force = a.force;
-  // absolute() first: weakly_canonical leaves a relative path with no existing prefix as it is.
-  auto target = [](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p)); };
-  if (!run.out.empty() && !run.vtu.empty() && target(run.out) == target(run.vtu))
-    throw std::invalid_argument("--out and --vtu name the same file");
+  // After every link, a dangling one too (core/io/output_ownership.h).
+  check_distinct_outputs({{"--out", run.out}, {"--vtu", run.vtu}}, {});
 }
 
 bar::MeshOptions parse_bar_mesh(const CLI::App& command, const SolveArgs& a) {

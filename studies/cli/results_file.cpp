@@ -25,15 +25,22 @@ std::unique_ptr<H5Writer> open_results(const std::string& dir, const OutputRules
   for (std::filesystem::path p = std::filesystem::absolute(dir); !p.empty() && !std::filesystem::exists(p);
        p = p.parent_path())
     made.push_back(p.string());
+  // Known to the signal handler before they exist: a SIGTERM in the first second of a study
+  // left the folder behind (SPEC §4). Only empty folders are removed.
+  std::vector<Removal> removals;
+  for (const std::string& folder : made) removals.push_back({Removal::Folder, folder});
+  const int removal = register_removals(removals);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw OutputError("cannot create output directory '" + dir + "': " + ec.message());
   try {
+    if (ec) throw OutputError("cannot create output directory '" + dir + "': " + ec.message());
     auto out = open_results_file(dir + "/results.h5", rules);
     out->remove_if_abandoned(made);
+    unregister_removals(removal);
     return out;
   } catch (...) {
     for (const std::string& folder : made) ::rmdir(folder.c_str());
+    unregister_removals(removal);
     throw;
   }
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <mutex>
+#include <new>
 #include <stdexcept>
 #include <thread>
 
@@ -56,6 +57,7 @@ std::vector<SceneFileScene> solve_layers(const SceneFileBulk& bulk, const std::v
   std::vector<SceneFileScene> out(eps.size());
   std::vector<std::string> errors(eps.size());
   std::atomic<std::size_t> next{0};
+  std::atomic<bool> out_of_memory{false};
   std::mutex print;
   const SolverOptions solver = solver_options(options);
   auto work = [&] {
@@ -67,6 +69,8 @@ std::vector<SceneFileScene> solve_layers(const SceneFileBulk& bulk, const std::v
           std::cerr << "[scene] layer eps " << eps[i] << ": " << (out[i].report.converged ? "converged" : "NOT converged")
                     << ", " << out[i].report.wall_time_s << " s\n";
         }
+      } catch (const std::bad_alloc&) {
+        out_of_memory = true;  // the run's failure, not this thickness's: rethrown below as it is
       } catch (const std::exception& e) {
         errors[i] = e.what();
       }
@@ -75,6 +79,7 @@ std::vector<SceneFileScene> solve_layers(const SceneFileBulk& bulk, const std::v
   std::vector<std::thread> pool;
   for (int t = 0; t < std::max(1, options.threads); ++t) pool.emplace_back(work);
   for (auto& t : pool) t.join();
+  if (out_of_memory) throw std::bad_alloc();
   for (std::size_t i = 0; i < eps.size(); ++i)
     if (!errors[i].empty()) throw std::invalid_argument("layer mode at eps " + plain(eps[i]) + ": " + errors[i]);
   return out;

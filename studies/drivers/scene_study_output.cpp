@@ -8,6 +8,7 @@
 #include "core/io/output_target.h"
 #include "studies/tools/format.h"
 #include "studies/tools/scene_distance.h"
+#include "core/io/csv_writer.h"
 
 namespace thinlayer {
 
@@ -150,9 +151,23 @@ std::string bondline_fields_csv(const std::vector<ScenesOnBulk>& scenes) {
     const double eps = mode == "layer" ? r.numbers.at("eps") : 0.0;
     for (const BondlineField& f : bondline_fields(*s.bulk, r))
       for (std::size_t k = 0; k < f.s.size(); ++k)
-        csv << s.id << "," << mode << "," << eps << "," << s.h << "," << f.bondline << "," << k << "," << f.s[k] << ","
-            << f.x[k] << "," << f.y[k] << "," << f.sigma_N[k] << "," << f.sigma_T[k] << "," << f.jump_N[k] << ","
-            << f.jump_T[k] << "," << f.status[k] << "\n";
+        // Names quoted and neutralised (RFC 4180, no formula: core/io/csv_writer.h).
+        csv << CsvRow()
+                   .text(s.id)
+                   .text(mode)
+                   .number(eps)
+                   .number(s.h)
+                   .text(f.bondline)
+                   .integer(static_cast<long long>(k))
+                   .number(f.s[k])
+                   .number(f.x[k])
+                   .number(f.y[k])
+                   .number(f.sigma_N[k])
+                   .number(f.sigma_T[k])
+                   .number(f.jump_N[k])
+                   .number(f.jump_T[k])
+                   .integer(f.status[k])
+                   .line();
   }
   return csv.str();
 }

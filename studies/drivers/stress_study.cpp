@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <new>
 #include <sstream>
 
 #include "cases/dovetail/dovetail.h"
@@ -195,6 +196,8 @@ StressResult solve_stress_scene(const StressScene& scene) {
     s.record.text["stress_scene"] = scene.what;
     result.has_record = o.finite;
     if (o.finite) result.record = std::move(s.record);
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory is the run's failure, not a stress scene's outcome (exit 2, the phase named)
   } catch (const std::exception& e) {
     // A factorisation that finds the system singular throws; its message names the cause.
     const std::string what = e.what();

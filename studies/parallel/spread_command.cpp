@@ -5,6 +5,7 @@
 #include "studies/parallel/process_group.h"
 #include "studies/cli/results_file.h"
 #include "studies/parallel/scene_batch.h"
+#include "studies/tools/run_phase.h"
 
 namespace thinlayer {
 
@@ -47,9 +48,9 @@ int command_status(int status) { return broadcast_from_root(status); }
 
 int command_failed(const std::string& command, const std::exception& e) {
   const bool everyone_knows = dynamic_cast<const ErrorOnEveryRank*>(&e) != nullptr;
-  if (rank_count() == 1 || (everyone_knows && is_root())) std::cerr << "thinlayer " << command << ": " << e.what() << "\n";
+  if (rank_count() == 1 || (everyone_knows && is_root())) std::cerr << "thinlayer " << command << ": " << failure_text(e) << "\n";
   if (rank_count() == 1 || everyone_knows) return 2;
-  std::cerr << "thinlayer " << command << " (rank " << rank() << " of " << rank_count() << "): " << e.what() << "\n";
+  std::cerr << "thinlayer " << command << " (rank " << rank() << " of " << rank_count() << "): " << failure_text(e) << "\n";
   abort_all_ranks(2);
 }
 
