@@ -18,6 +18,7 @@
 
 #include "core/io/output_target.h"
 #include "studies/drivers/generated_scenes.h"
+#include "core/linalg/factor_memory.h"
 #include "studies/parallel/blas_threads.h"
 
 namespace thinlayer {
@@ -198,5 +199,6 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   thinlayer::use_one_blas_thread();
+  thinlayer::keep_factor_memory();
   return thinlayer::run(argc, argv);
 }

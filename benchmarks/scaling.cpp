@@ -34,6 +34,7 @@
 #include "cases/scene/scene_file_scenes.h"
 #include "cases/scene/scene_model.h"
 #include "cases/scene/scene_spec.h"
+#include "core/linalg/factor_memory.h"
 #include "studies/parallel/blas_threads.h"
 
 namespace thinlayer {
@@ -87,11 +88,19 @@ Measured in_child(const std::function<std::string()>& work, int timeout_s) {
   return m;
 }
 
+// Nodes on S: the combined statuses of a layer record, every interface's nodes of a limit one.
+size_t interface_nodes(const SceneRecord& record) {
+  if (!record.combined_status.empty()) return record.combined_status.size();
+  size_t n = 0;
+  for (const InterfaceFields& f : record.interfaces) n += f.status.size();
+  return n;
+}
+
 std::string line_of(double seconds, const SolveReport* report, const SceneRecord* record) {
   std::ostringstream s;
   s.precision(6);
   s << seconds << ' ' << (report ? report->iterations : 0) << ' ' << (report ? report->residual.value() : 0.0) << ' '
-    << (record ? record->nodes.rows() : 0) << ' ' << (record ? record->combined_status.size() : 0) << ' '
+    << (record ? record->nodes.rows() : 0) << ' ' << (record ? interface_nodes(*record) : 0) << ' '
     << (report ? to_string(report->stop_cause) : "-");
   return s.str();
 }
@@ -265,6 +274,7 @@ int run(int argc, char** argv) {
   if (!limit_joint.empty()) {
     if (argc % 2 == 0 || sizes.empty()) return usage();
     use_one_blas_thread();
+    keep_factor_memory();
     return run_limit(limit_joint, sizes, timeout_s, before);
   }
   if (argc % 2 == 0 || sizes.empty() || joint.empty() == dovetail_scene.empty()) return usage();
@@ -276,6 +286,7 @@ int run(int argc, char** argv) {
     eps = std::stod(dovetail_scene.substr(2));
   }
   use_one_blas_thread();
+  keep_factor_memory();
   std::printf("%s: layer mode against one bonded linear solve and the limit mode of the same mesh\n",
               joint.empty() ? ("dovetail (" + dovetail_scene + ")").c_str() : joint.c_str());
   std::printf("%9s %8s %6s | %9s %8s | %9s %8s %6s %9s %-10s | %9s %8s | %8s %8s %8s\n", "h", "nodes", "n_S", "bonded_s",

@@ -29,6 +29,7 @@
 #include "core/io/reference_tables.h"
 #include "cases/bar/bar_scenes.h"
 #include "cases/dovetail/dovetail_scenes.h"
+#include "core/linalg/factor_memory.h"
 #include "studies/parallel/blas_threads.h"
 
 namespace thinlayer {
@@ -191,5 +192,6 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   thinlayer::use_one_blas_thread();
+  thinlayer::keep_factor_memory();
   return thinlayer::run(argc, argv);
 }

@@ -30,6 +30,7 @@
 #include "core/solvers/mixed_system.h"
 #include "benchmarks/two_scale_lab/outer_newton.h"
 #include "core/solvers/solver_choice.h"
+#include "core/linalg/factor_memory.h"
 #include "studies/parallel/blas_threads.h"
 #include "studies/tools/scene_generator.h"
 
@@ -380,6 +381,7 @@ void scene_limit(const std::string& file, double interface_h, const Settings& s)
 
 int main(int argc, char** argv) {
   use_one_blas_thread();
+  keep_factor_memory();
   Settings s;
   std::vector<std::string> cases, eps, hs, seeds, scenes;
   for (int i = 1; i < argc; ++i) {

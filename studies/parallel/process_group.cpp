@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/linalg/factor_memory.h"
 #include "studies/parallel/blas_threads.h"
 
 namespace thinlayer {
@@ -48,6 +49,7 @@ void wait_politely(MPI_Request& request) {
 
 ProcessGroup::ProcessGroup(int& argc, char**& argv) {
   use_one_blas_thread();
+  keep_factor_memory();
   if (!launched_by_mpi()) return;
   int provided = 0;
   // Only the main thread calls MPI; the scene threads never do.
