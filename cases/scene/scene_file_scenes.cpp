@@ -116,11 +116,18 @@ InterfaceLaw SceneFileBulk::limit_law(int i, double eps) const {
   return b.glue_model().limit_law(t, reference(i), b.faces, b.friction);
 }
 
-std::vector<Interface> SceneFileBulk::limit_interfaces(double eps, bool with_laws) const {
+InterfaceLaw SceneFileBulk::classified_law(int i, double eps) const {
+  const SceneInterfaceSpec& b = spec_.interfaces.at(i);
+  if (!b.glue) return limit_law(i, eps);
+  return b.glue_model().classified_law(eps > 0 ? eps : b.glue->thickness, reference(i), b.faces, b.friction);
+}
+
+std::vector<Interface> SceneFileBulk::limit_interfaces(double eps, bool with_laws, bool classified) const {
   std::vector<Interface> out;
   for (std::size_t i = 0; i < spec_.interfaces.size(); ++i) {
     const int k = static_cast<int>(i);
-    out.push_back(make_scene_limit_interface(spec_, model_, k, S_[i], with_laws ? limit_law(k, eps) : InterfaceLaw{}));
+    const InterfaceLaw law = !with_laws ? InterfaceLaw{} : classified ? classified_law(k, eps) : limit_law(k, eps);
+    out.push_back(make_scene_limit_interface(spec_, model_, k, S_[i], law));
   }
   return out;
 }
@@ -159,9 +166,9 @@ int plus_face_of(const SceneFileBulk& bulk, const SceneRecord& record, int i) {
 }
 
 SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, const SolverOptions& options, double eps,
-                                      double status_tolerance) {
+                                      double status_tolerance, bool classified) {
   const SceneSpec& spec = bulk.spec();
-  const ContactProblem problem(bulk.system(), bulk.limit_interfaces(eps));
+  const ContactProblem problem(bulk.system(), bulk.limit_interfaces(eps, true, classified));
   // A scene bonded on every face is one sparse solve (core/solvers/bonded_solve.h): nothing to condense.
   const CondensedInterface* condensed =
       solver == SolverKind::Fast && !every_interface_bonded(problem) ? &bulk.condensed() : nullptr;
@@ -170,10 +177,12 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
   SceneRecord& r = scene.record;
   // An engineer's glue's law depends on its thickness (SPEC §1.3): then the id and the record say which.
   const double law_thickness = bulk.has_engineer_glue() ? id_thickness(spec, eps) : 0.0;
-  r = record_scene(scene_id(spec, "limit", law_thickness, solver), bulk.model(), problem, scene.report, status_tolerance);
+  r = record_scene(scene_id(spec, "limit", law_thickness, solver) + (classified ? "-classified" : ""), bulk.model(),
+                   problem, scene.report, status_tolerance);
   for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
     const InterfaceFields& S = r.interfaces[i];
-    scene.bondlines.push_back({spec.interfaces[i].name, problem.interfaces()[i].law, 0.0, {}, S.status});
+    scene.bondlines.push_back({spec.interfaces[i].name, problem.interfaces()[i].law,
+                               bulk.classified_law(static_cast<int>(i), eps), 0.0, {}, S.status});
     add(scene.limit, S.counts());
   }
   add_attributes(r, bulk, scene.bondlines, "limit", 0.0, bulk.meshes().meshing_time_s);
@@ -205,10 +214,11 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   std::size_t k = 0;
   bool first_layer = true;
   for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
-    SceneBondline b{spec.interfaces[i].name, bulk.limit_law(static_cast<int>(i), layer.thickness[i]), layer.thickness[i],
-                    layer.moduli[i], {}};
+    const int bi = static_cast<int>(i);
+    SceneBondline b{spec.interfaces[i].name, bulk.limit_law(bi, layer.thickness[i]),
+                    bulk.classified_law(bi, layer.thickness[i]), layer.thickness[i], layer.moduli[i], {}};
     if (layer.layer_body[i] < 0) {
-      b.law = problem.interfaces()[k].law;
+      b.law = b.classified = problem.interfaces()[k].law;
       b.status = r.interfaces[k++].status;
       add(scene.counts.combined, r.interfaces[k - 1].counts());
     } else {
@@ -298,6 +308,14 @@ void write_scene_file_scene(H5Writer& file, const SceneFileScene& scene, const S
     file.attr(p, "lambda_bar_units", stiffness);
     file.attr(p, "mu_bar", state.law.mu_bar);
     file.attr(p, "mu_bar_units", stiffness);
+    // SPEC §1.3: what the paper's 3 % / 30x rule would have chosen (not solved for, unless a
+    // classification_* attribute below says so).
+    file.attr(p, "classified_law_case", std::string(1, state.classified.table1_case()));
+    file.attr(p, "classified_lambda_bar", state.classified.lambda_bar);
+    file.attr(p, "classified_mu_bar", state.classified.mu_bar);
+    file.attr(p, "classified_description",
+              std::string("the law the paper's 3 % / 30x rule (section 3.3) would choose at this thickness; the "
+                          "scene solves lambda_bar, mu_bar instead (SPEC 1.3: an engineer's glue keeps its finite law)"));
     file.attr(p, "node_order", std::string("from one end of the bondline to the other along its curve (arc length "
                                            "increasing); node k of S, S+ and S- is the same point of the bondline"));
     const AdherentData ref = bulk.reference(static_cast<int>(i));

@@ -14,6 +14,7 @@
 #include "studies/cli/options.h"
 #include "studies/cli/results_file.h"
 #include "studies/cli/scene_report.h"
+#include "studies/drivers/classification_cost.h"
 #include "studies/drivers/scene_file_study.h"
 #include "studies/drivers/scene_solve_output.h"
 #include "studies/parallel/process_group.h"
@@ -98,12 +99,16 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   try {
     const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options, in.eps)
                                                 : solve_scene_file_layer(*bulk, in.eps, in.solver, in.options);
+    // SPEC 1.3: what the paper's 3 % / 30x rule would have cost, solved beside (limit mode).
+    ClassificationCost cost;
+    if (in.mode == "limit") cost = classification_cost(*bulk, s, in.eps, in.options);
     if (!in.json) print_scene_solve(*bulk, in.mode, in.eps, s);
+    if (!in.json && cost.differs) std::printf("  %s\n", classification_cost_line(*bulk, s, cost).c_str());
     if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force});
     if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
-    if (in.json) std::printf("%s\n", scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu).c_str());
+    if (in.json) std::printf("%s\n", scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu, &cost).c_str());
     if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (const std::string w = film_warning(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!s.report.converged) {

@@ -65,8 +65,8 @@ void print_scene_study(const SceneFileBulk& bulk, const SceneStudyResult& r, con
     std::printf("  %s (faces %s/%s): %s", b.label().c_str(), to_string(b.faces.plus), to_string(b.faces.minus),
                 law.describe().c_str());
     if (b.glue)
-      std::printf(", an engineer's glue E %g, nu %g, t %g mm: its law at each eps by SPEC 1.3 (L = %g mm)", b.glue->E,
-                  b.glue->nu, b.glue->thickness, bulk.characteristic_length());
+      std::printf(", an engineer's glue E %g, nu %g, t %g mm: its own springs K_N = (lambda_g+2mu_g)/eps, K_T = mu_g/eps "
+                  "at each eps (SPEC 1.3)", b.glue->E, b.glue->nu, b.glue->thickness);
     else
       std::printf(" (lambda_bar %g, mu_bar %g %s, f %g)", law.lambda_bar, law.mu_bar, spec.units.stiffness().c_str(),
                   law.friction);
