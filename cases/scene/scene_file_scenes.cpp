@@ -148,6 +148,13 @@ void check_layer_mode(const SceneFileBulk& bulk, double eps) {
   if (eps == 0) make_scene_layer_model(spec, bulk.meshes(), bulk.interface_nodes(), 0.0);  // each glue's own thickness
 }
 
+LoadPath scene_load_path(const SceneFileBulk& bulk, const std::string& mode, double eps) {
+  const std::string& force = bulk.spec().units.force;
+  if (mode == "limit") return check_load_path(bulk.model(), bulk.limit_interfaces(eps), force);
+  const SceneLayerModel layer = make_scene_layer_model(bulk.spec(), bulk.meshes(), bulk.interface_nodes(), eps);
+  return check_load_path(layer.model, layer.interfaces, force);
+}
+
 const CondensedInterface& SceneFileBulk::condensed() {
   if (!condensed_) {
     const ContactProblem geometry(*system_, limit_interfaces(0, /*with_laws=*/false));

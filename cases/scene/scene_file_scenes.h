@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cases/layer_scene.h"
+#include "cases/scene/load_path.h"
 #include "cases/scene/scene_model.h"
 #include "core/fem/linear_system.h"
 #include "core/interface/classifier.h"
@@ -65,6 +66,11 @@ class SceneFileBulk {
 // each glue's own): a "layer" or "glue" somewhere, Q1 elements (the band is Q1), and a thickness
 // the joint can hold (saying why not).
 void check_layer_mode(const SceneFileBulk& bulk, double eps);
+
+// Does every load have a path to a support, and can friction hold what friction alone holds?
+// (cases/scene/load_path.h) On the model of `mode` ("limit" or "layer") at thickness eps (0: each
+// glue's own), before the solve.
+LoadPath scene_load_path(const SceneFileBulk& bulk, const std::string& mode, double eps);
 
 // What a scene did on one bondline.
 struct SceneBondline {

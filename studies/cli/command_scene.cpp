@@ -76,6 +76,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   SceneSolveInput in;
   std::vector<InputFile> inputs;
   std::unique_ptr<SceneFileBulk> bulk;
+  LoadPath load_path;
   try {
     in = parse_solve(command, args);
     SceneSpec spec = read_scene_spec(in.scene);
@@ -89,6 +90,14 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     check_scene_eps(*bulk, in.mode, in.eps);
+    // SPEC 1.3: a load with no path is bad input; a joint friction alone cannot hold fails (exit 1),
+    // both found before any solve.
+    load_path = scene_load_path(*bulk, in.mode, in.eps);
+    if (!load_path.no_path.empty()) throw std::invalid_argument(load_path.no_path);
+    if (const FrictionHold* over = load_path.exceeded()) {
+      std::cerr << "thinlayer solve: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+      return 1;
+    }
   } catch (const std::invalid_argument& e) {
     return fail("solve", e, 2);
   } catch (const OutputError& e) {
@@ -113,6 +122,9 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (const std::string w = film_warning(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!s.report.converged) {
       std::cerr << "thinlayer solve: " << s.report.message << "\n";
+      // What friction alone had to hold, where it did (the capacity was estimated within the load).
+      for (const FrictionHold& h : load_path.friction)
+        std::cerr << "thinlayer solve: " << friction_line(h, bulk->spec().units.force) << "\n";
       return 1;
     }
     return 0;
@@ -166,6 +178,14 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
       throw std::invalid_argument("scene '" + spec.name + "' gives a limit law only ('law'): it has no layer mode to study");
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     for (double e : scene_study_grid(*bulk, options)) check_layer_mode(*bulk, e);
+    // SPEC 1.3: a load with no path is bad input; a joint friction alone cannot hold fails (exit 1);
+    // judged on the limit mode (the glue's own thickness), before any of the study's solves.
+    const LoadPath path = scene_load_path(*bulk, "limit", 0.0);
+    if (!path.no_path.empty()) throw std::invalid_argument(path.no_path);
+    if (const FrictionHold* over = path.exceeded()) {
+      std::cerr << "thinlayer study: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+      return 1;
+    }
   } catch (const std::exception& e) {
     return fail("study", e, 2);
   }
