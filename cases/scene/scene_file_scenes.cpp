@@ -1,5 +1,6 @@
 #include "cases/scene/scene_file_scenes.h"
 
+#include "cases/answer_admissibility.h"
 #include "cases/film_admissibility.h"
 
 #include <chrono>
@@ -66,6 +67,21 @@ std::string scene_id(const SceneSpec& spec, const std::string& mode, double eps,
   if (eps > 0) id << "-eps" << scene_id_number(eps);
   id << "-" << to_string(solver);
   return id.str();
+}
+
+// Which faces of the layers are bonded, and which layers are glued (a bonded face): SPEC §1.5's
+// film admissibility is for contact faces and films only (cases/film_admissibility.h).
+LayerFaceRoles layer_face_roles(const SceneSpec& spec, const SceneLayerModel& layer) {
+  LayerFaceRoles roles;
+  for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
+    if (layer.layer_body[i] < 0) continue;
+    const LayerFaces& faces = spec.interfaces[i].faces;
+    const int k = static_cast<int>(i);
+    if (faces.plus == FaceHold::Bonded) roles.bonded_faces.insert(interface_name(spec, k, "S+"));
+    if (faces.minus == FaceHold::Bonded) roles.bonded_faces.insert(interface_name(spec, k, "S-"));
+    if (faces.any_bonded()) roles.glued_layers.insert(layer.model.bodies[layer.layer_body[i]].name);
+  }
+  return roles;
 }
 
 bool all_open(const std::vector<SceneBondline>& bondlines) {
@@ -198,6 +214,7 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
   scene.loads = applied_load_resultants(bulk.model());
   scene.carries_load = !all_open(scene.bondlines);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
+  record_answer_admissibility(r);
   return scene;
 }
 
@@ -257,7 +274,8 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   scene.loads = applied_load_resultants(layer.model);
   scene.carries_load = !all_open(scene.bondlines);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
-  record_film_admissibility(r);
+  record_film_admissibility(r, layer_face_roles(spec, layer));
+  record_answer_admissibility(r);
   return scene;
 }
 

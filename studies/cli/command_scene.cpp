@@ -1,5 +1,6 @@
 #include "studies/cli/command_scene.h"
 
+#include "cases/answer_admissibility.h"
 #include "cases/film_admissibility.h"
 
 #include <cmath>
@@ -120,6 +121,8 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (in.json) std::printf("%s\n", scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu, &cost).c_str());
     if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (const std::string w = film_warning(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = displacement_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = limit_slip_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!s.report.converged) {
       std::cerr << "thinlayer solve: " << s.report.message << "\n";
       // What friction alone had to hold, where it did (the capacity was estimated within the load).

@@ -66,7 +66,15 @@ void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, doubl
     print_counts("S+", s.counts.plus_face);
     print_counts("S-", s.counts.minus_face);
     print_counts("combined", s.counts.combined);
-    std::printf("  %s\n", film_line(s.record).c_str());
+    if (const std::string film = film_line(s.record); !film.empty()) std::printf("  %s\n", film.c_str());
+  }
+  const auto& n = s.record.numbers;
+  if (n.count("displacement_over_size")) {
+    std::printf("  displacements: largest |u| %.3g mm, %.3g %% of the size of body '%s' (%.3g mm)",
+                n.at("displacement_max"), 100 * n.at("displacement_over_size"), s.record.text.at("displacement_body").c_str(),
+                n.at("displacement_body_size"));
+    if (n.count("slip_over_h")) std::printf("; largest slip on the bondlines %.3g elements along S", n.at("slip_over_h"));
+    std::printf("\n");
   }
   const SolveReport& r = s.report;
   const std::string outcome = r.converged ? "converged" : std::string("NOT converged (") + to_string(r.stop_cause) + ")";
@@ -153,8 +161,12 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
 }
 
 nlohmann::json film_json(const SceneRecord& record) {
-  if (!record.numbers.count("film_slip_over_h")) return nullptr;
-  return {{"slip_over_h", record.numbers.at("film_slip_over_h")}, {"strain_max", record.numbers.at("film_strain_max")}};
+  const auto& n = record.numbers;
+  if (!n.count("film_slip_over_h") && !n.count("film_strain_max") && !n.count("glue_strain_max")) return nullptr;
+  auto value = [&](const char* name) { return n.count(name) ? nlohmann::json(n.at(name)) : nlohmann::json(nullptr); };
+  // slip_over_h: contact faces only; strain_max: films (no bonded face); glue_strain_max: glued layers (a load level).
+  return {{"slip_over_h", value("film_slip_over_h")}, {"strain_max", value("film_strain_max")},
+          {"glue_strain_max", value("glue_strain_max")}};
 }
 
 void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps) {
