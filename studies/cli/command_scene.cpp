@@ -149,7 +149,8 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     if (study != "convergence" && study != "validity")
       throw std::invalid_argument("--scene applies to study convergence and study validity only");
     if (!refuse_unless_one_process("study " + study + " --scene")) return 2;
-    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes", "force"};
+    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes", "force",
+                                     "peak-distance"};
     if (study == "validity") allowed.insert("bisection-steps");
     require_only(c, allowed, "study " + study + " --scene");
     const std::string scene = a.scene;
@@ -161,6 +162,11 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     if (!(options.tolerance > 0) || !(options.tolerance < 1)) throw std::invalid_argument("--tolerance must be in (0, 1)");
     options.threads = given(c, "threads") ? a.threads : 2;
     if (options.threads < 1 || options.threads > 64) throw std::invalid_argument("--threads must be in 1..64");
+    if (given(c, "peak-distance")) {
+      options.peak_distance = a.peak_distance;
+      if (!(options.peak_distance > 0) || std::isinf(options.peak_distance))
+        throw std::invalid_argument("--peak-distance must be finite and > 0 (mm)");
+    }
     options.bisection_steps = given(c, "bisection-steps") ? a.bisection_steps : 2;
     if (options.bisection_steps < 0 || options.bisection_steps > 20)
       throw std::invalid_argument("--bisection-steps must be in 0..20");

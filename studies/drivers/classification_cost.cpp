@@ -5,6 +5,7 @@
 
 #include "studies/tools/bondline_fields.h"
 #include "studies/tools/error_norms.h"
+#include "studies/tools/scene_distance.h"
 
 namespace thinlayer {
 
@@ -12,17 +13,6 @@ namespace {
 
 bool same_law(const InterfaceLaw& a, const InterfaceLaw& b) {
   return a.lambda_bar == b.lambda_bar && a.mu_bar == b.mu_bar && a.bilateral == b.bilateral;
-}
-
-double reaction_distance(const SceneRecord& a, const SceneRecord& b) {
-  double diff = 0, ref = 0;
-  for (const auto& [name, R] : b.reactions) {
-    const auto it = a.reactions.find(name);
-    const Eigen::Vector2d Ra = it == a.reactions.end() ? Eigen::Vector2d::Zero() : it->second;
-    diff += (Ra - R).squaredNorm();
-    ref += R.squaredNorm();
-  }
-  return ref > 0 ? std::sqrt(diff / ref) : std::sqrt(diff);
 }
 
 std::string percent(double x) {
