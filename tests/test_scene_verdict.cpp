@@ -112,7 +112,9 @@ TEST(SceneVerdict, WithinMeansAtEveryThinnerSample) {
       EXPECT_EQ(v.status, "below_range") << v.quantity << " " << v.tau;
     } else {
       for (const auto& [eps, e] : by_eps) {
-        if (eps <= v.eps_max) EXPECT_LE(e, v.tau) << v.quantity << " " << v.tau << " at " << eps;
+        if (eps <= v.eps_max) {
+          EXPECT_LE(e, v.tau) << v.quantity << " " << v.tau << " at " << eps;
+        }
       }
     }
   }
