@@ -327,6 +327,8 @@ void write_scene_file_scene(H5Writer& file, const SceneFileScene& scene, const S
     file.attr(p, "face_plus", std::string(to_string(b.faces.plus)));
     file.attr(p, "face_minus", std::string(to_string(b.faces.minus)));
     file.attr(p, "friction", b.friction);
+    file.attr(p, "make_room", b.make_room ? "[" + std::to_string((*b.make_room)[0]) + ", " + std::to_string((*b.make_room)[1]) + "]"
+                                          : std::string("the bondline's normal (from minus into plus)"));
     file.attr(p, "law", law_kind(state.law));
     file.attr(p, "law_case", std::string(1, state.law.table1_case()));
     file.attr(p, "lambda_bar", state.law.lambda_bar);
