@@ -207,54 +207,57 @@ def verdict_samples_table(study):
 # The joint deformed: the whole joint, then its bondlines zoomed
 
 def deformed_shape(ctx, name, scenes_and_titles):
-    """Per scene: the whole joint (framed tight on it) and its bondlines zoomed, coloured by body, the
-    displacements magnified so that the largest is a tenth of the zoom window."""
+    """The whole joint of each scene, each across the page and framed tight on it, then their
+    bondlines zoomed side by side; coloured by body, the displacements magnified so that the largest
+    is a tenth of the zoom window."""
     n = len(scenes_and_titles)
     first = scenes_and_titles[0][0]
     nodes0 = array(first, "mesh/nodes")
     lo, hi = nodes0.min(axis=0), nodes0.max(axis=0)
     extent = np.maximum(hi - lo, 1e-12)
-    # The zoom: the bondlines' bounding box, with a margin of a fifth of its length (and at least the
-    # adherents' neighbourhood across them).
+    # The zoom: the bondlines' bounding box, with a margin of a fifth of their length.
     xs = np.vstack([b.x for b in bondline_fields(first)])
     blo, bhi = xs.min(axis=0), xs.max(axis=0)
-    length = max(np.ptp(xs, axis=0).max(), 1e-12)
-    margin = 0.2 * length
+    margin = 0.2 * max(np.ptp(xs, axis=0).max(), 1e-12)
     zlo, zhi = blo - margin, bhi + margin
     zext = zhi - zlo
     u_max = max(np.abs(array(s, "u")).max() for s, _ in scenes_and_titles)
     scale = 0.1 * zext.min() / u_max if u_max > 0 else 1.0
-    whole_h = np.clip(6.0 * extent[1] / extent[0], 1.2, 4.0)
-    zoom_h = np.clip(6.0 * zext[1] / zext[0], 1.5, 4.5)
-    fig, axes = plt.subplots(n, 2, figsize=(13, max(whole_h, zoom_h) * n + 1.0), squeeze=False,
-                             gridspec_kw={"width_ratios": [1.1, 1]})
-    for row, (s, title) in enumerate(scenes_and_titles):
+    width = 13.0
+    whole_h = float(np.clip(width * 0.9 * extent[1] / extent[0], 0.9, 4.0)) + 0.7
+    zoom_h = float(np.clip(width / n * 0.85 * zext[1] / zext[0], 2.0, 5.0)) + 0.7
+    fig = plt.figure(figsize=(width, n * whole_h + zoom_h + 0.6))
+    grid = fig.add_gridspec(n + 1, n, height_ratios=[whole_h] * n + [zoom_h])
+    for k, (s, title) in enumerate(scenes_and_titles):
         nodes, u, cells = array(s, "mesh/nodes"), array(s, "u"), array(s, "mesh/cells")
         body = array(s, "mesh/cell_body")
         names = strings(s["mesh/body_names"])
         moved = nodes + scale * u
         colors = [LAYER_COLOR if names[b].startswith("layer") else BODY_COLORS[b % len(BODY_COLORS)] for b in body]
-        for col, (ax, window) in enumerate(((axes[row, 0], (lo, hi)), (axes[row, 1], (zlo, zhi)))):
+        for ax, window, what in ((fig.add_subplot(grid[k, :]), (lo, hi), "the whole joint"),
+                                 (fig.add_subplot(grid[n, k]), (zlo, zhi), "its bondlines zoomed")):
             ax.add_collection(PolyCollection([nodes[c[c >= 0]] for c in cells], facecolors="none", edgecolors="#cccccc",
                                              linewidths=0.3))
             ax.add_collection(PolyCollection([moved[c[c >= 0]] for c in cells], facecolors=colors, edgecolors="#333333",
                                              linewidths=0.15, alpha=0.85))
-            pad = 0.03 * (window[1] - window[0]) + scale * u_max * (col == 0)
+            pad = 0.02 * (window[1] - window[0]) + (scale * u_max if what == "the whole joint" else 0)
             ax.set_xlim(window[0][0] - pad[0], window[1][0] + pad[0])
             ax.set_ylim(window[0][1] - pad[1], window[1][1] + pad[1])
             ax.set_aspect("equal")
             ax.set_xlabel("x (mm)")
             ax.set_ylabel("y (mm)")
-            ax.set_title(title + (" — the whole joint" if col == 0 else " — its bondlines zoomed"), fontsize=9)
-        handles = [plt.Rectangle((0, 0), 1, 1, color=LAYER_COLOR if nm.startswith("layer") else BODY_COLORS[i % len(BODY_COLORS)])
-                   for i, nm in enumerate(names)]
-        axes[row, 1].legend(handles, names, fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
+            ax.set_title(f"{title} — {what}", fontsize=9)
+            if what == "the whole joint":
+                handles = [plt.Rectangle((0, 0), 1, 1, color=LAYER_COLOR if nm.startswith("layer")
+                                         else BODY_COLORS[i % len(BODY_COLORS)]) for i, nm in enumerate(names)]
+                ax.legend(handles, names, fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.suptitle(f"{name}: deformed shape, displacements × {scale:.3g} (grey: at rest)", fontsize=10)
     fig.tight_layout()
     return ctx.figures.save(fig, f"joint_{slug(name)}_shape", f"{name} deformed shape",
                             f"{esc(name)}: the deformed joint coloured by body (the layers red), displacements magnified "
-                            f"× {scale:.3g} (the largest is a tenth of the zoom window); left the whole joint, right its "
-                            "bondlines zoomed; first the limit law, then the meshed layer at the glue's own thickness.")
+                            f"× {scale:.3g} (the largest is a tenth of the zoom window): the whole joint of each mode "
+                            "across the page, then their bondlines zoomed side by side; first the limit law, then the "
+                            "meshed layer at the glue's own thickness.")
 
 
 # ---------------------------------------------------------------------------------------------
