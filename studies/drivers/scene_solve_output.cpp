@@ -130,6 +130,7 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
                     {"bulk", report.residual.bulk}, {"tolerance", report.tolerance}}},
       {"counts", counts},
       {"carries_load", s.carries_load},
+      {"carried", {{"bondline_force", s.bondline_force}, {"force_scale", s.force_scale}}},
       {"reactions", reactions},
       {"loads", loads},
       {"force_units", bulk.spec().units.force + "/mm"},
@@ -181,8 +182,18 @@ void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double 
 
 std::string no_load_warning(const SceneFileScene& s) {
   if (s.carries_load) return "";
-  return "warning: every bondline node is open (gap): the joint carries no load across its bondlines (a glued joint "
-         "needs \"faces\": {\"plus\": \"bonded\", \"minus\": \"bonded\"})";
+  bool open = true;
+  for (const SceneBondline& b : s.bondlines)
+    for (int status : b.status) open = open && status == static_cast<int>(NodeStatus::Gap);
+  if (open)
+    return "warning: every bondline node is open (gap): the joint carries no load across its bondlines (a glued joint "
+           "needs \"faces\": {\"plus\": \"bonded\", \"minus\": \"bonded\"})";
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "warning: the joint carries next to nothing across its bondlines: %.3g per mm in all, against %.3g per "
+                "mm that its loads and imposed displacements call for (a law without stiffness along the load?)",
+                s.bondline_force, s.force_scale);
+  return buf;
 }
 
 }  // namespace thinlayer
