@@ -164,10 +164,13 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
 nlohmann::json film_json(const SceneRecord& record) {
   const auto& n = record.numbers;
   if (!n.count("film_slip_over_h") && !n.count("film_strain_max") && !n.count("glue_strain_max")) return nullptr;
-  auto value = [&](const char* name) { return n.count(name) ? nlohmann::json(n.at(name)) : nlohmann::json(nullptr); };
-  // slip_over_h: contact faces only; strain_max: films (no bonded face); glue_strain_max: glued layers (a load level).
-  return {{"slip_over_h", value("film_slip_over_h")}, {"strain_max", value("film_strain_max")},
-          {"glue_strain_max", value("glue_strain_max")}};
+  // Each where it applies: slip_over_h on contact faces, strain_max of films (no bonded face),
+  // glue_strain_max of glued layers (a load level).
+  nlohmann::json film = nlohmann::json::object();
+  for (const auto& [key, name] : {std::pair{"slip_over_h", "film_slip_over_h"}, std::pair{"strain_max", "film_strain_max"},
+                                  std::pair{"glue_strain_max", "glue_strain_max"}})
+    if (n.count(name)) film[key] = n.at(name);
+  return film;
 }
 
 void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps) {
