@@ -1,5 +1,6 @@
 #include "cases/scene/scene_file_scenes.h"
 
+#include "cases/answer_admissibility.h"
 #include "cases/film_admissibility.h"
 
 #include <chrono>
@@ -69,6 +70,43 @@ std::string scene_id(const SceneSpec& spec, const std::string& mode, double eps,
   return id.str();
 }
 
+// Which faces of the layers are bonded, and which layers are glued (a bonded face): SPEC §1.5's
+// film admissibility is for contact faces and films only (cases/film_admissibility.h).
+LayerFaceRoles layer_face_roles(const SceneSpec& spec, const SceneLayerModel& layer) {
+  LayerFaceRoles roles;
+  for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
+    if (layer.layer_body[i] < 0) continue;
+    const LayerFaces& faces = spec.interfaces[i].faces;
+    const int k = static_cast<int>(i);
+    if (faces.plus == FaceHold::Bonded) roles.bonded_faces.insert(interface_name(spec, k, "S+"));
+    if (faces.minus == FaceHold::Bonded) roles.bonded_faces.insert(interface_name(spec, k, "S-"));
+    if (faces.any_bonded()) roles.glued_layers.insert(layer.model.bodies[layer.layer_body[i]].name);
+  }
+  return roles;
+}
+
+// How much the bondlines carry, against how much the scene calls for (force unit per mm): Σ |σ| ℓ
+// on each bondline's plus face; the largest load resultant, and E_b |u| of each nonzero imposed
+// displacement on a body b (the force that strains a unit square of it by u).
+void measure_carried(const SceneFileBulk& bulk, const Model& model, SceneFileScene& scene) {
+  const SceneRecord& r = scene.record;
+  scene.bondline_force = 0;
+  for (std::size_t i = 0; i < bulk.spec().interfaces.size(); ++i) {
+    const InterfaceFields& f = r.interfaces.at(plus_face_of(bulk, r, static_cast<int>(i)));
+    for (Eigen::Index k = 0; k < f.sigma_N.size(); ++k)
+      scene.bondline_force += std::hypot(f.sigma_N[k], f.sigma_T[k]) * f.length[k];
+  }
+  scene.force_scale = 0;
+  for (const auto& [_, F] : scene.loads) scene.force_scale = std::max(scene.force_scale, F.norm());
+  for (const DirichletCondition& d : model.dirichlet) {
+    const Material& m = model.bodies[d.body].material;
+    const double E = m.mu * (3 * m.lambda + 2 * m.mu) / (m.lambda + m.mu);
+    scene.force_scale = std::max(scene.force_scale, E * std::abs(d.value));
+  }
+}
+
+bool carries(const SceneFileScene& s) { return s.bondline_force > 1e-6 * s.force_scale; }
+
 bool all_open(const std::vector<SceneBondline>& bondlines) {
   for (const SceneBondline& b : bondlines)
     for (int s : b.status)
@@ -117,11 +155,18 @@ InterfaceLaw SceneFileBulk::limit_law(int i, double eps) const {
   return b.glue_model().limit_law(t, reference(i), b.faces, b.friction);
 }
 
-std::vector<Interface> SceneFileBulk::limit_interfaces(double eps, bool with_laws) const {
+InterfaceLaw SceneFileBulk::classified_law(int i, double eps) const {
+  const SceneInterfaceSpec& b = spec_.interfaces.at(i);
+  if (!b.glue) return limit_law(i, eps);
+  return b.glue_model().classified_law(eps > 0 ? eps : b.glue->thickness, reference(i), b.faces, b.friction);
+}
+
+std::vector<Interface> SceneFileBulk::limit_interfaces(double eps, bool with_laws, bool classified) const {
   std::vector<Interface> out;
   for (std::size_t i = 0; i < spec_.interfaces.size(); ++i) {
     const int k = static_cast<int>(i);
-    out.push_back(make_scene_limit_interface(spec_, model_, k, S_[i], with_laws ? limit_law(k, eps) : InterfaceLaw{}));
+    const InterfaceLaw law = !with_laws ? InterfaceLaw{} : classified ? classified_law(k, eps) : limit_law(k, eps);
+    out.push_back(make_scene_limit_interface(spec_, model_, k, S_[i], law));
   }
   return out;
 }
@@ -142,6 +187,13 @@ void check_layer_mode(const SceneFileBulk& bulk, double eps) {
   if (eps == 0) make_scene_layer_model(spec, bulk.meshes(), bulk.interface_nodes(), 0.0);  // each glue's own thickness
 }
 
+LoadPath scene_load_path(const SceneFileBulk& bulk, const std::string& mode, double eps) {
+  const std::string& force = bulk.spec().units.force;
+  if (mode == "limit") return check_load_path(bulk.model(), bulk.limit_interfaces(eps), force);
+  const SceneLayerModel layer = make_scene_layer_model(bulk.spec(), bulk.meshes(), bulk.interface_nodes(), eps);
+  return check_load_path(layer.model, layer.interfaces, force);
+}
+
 const CondensedInterface& SceneFileBulk::condensed() {
   if (!condensed_) {
     const ContactProblem geometry(*system_, limit_interfaces(0, /*with_laws=*/false));
@@ -160,9 +212,9 @@ int plus_face_of(const SceneFileBulk& bulk, const SceneRecord& record, int i) {
 }
 
 SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, const SolverOptions& options, double eps,
-                                      double status_tolerance) {
+                                      double status_tolerance, bool classified) {
   const SceneSpec& spec = bulk.spec();
-  const ContactProblem problem(bulk.system(), bulk.limit_interfaces(eps));
+  const ContactProblem problem(bulk.system(), bulk.limit_interfaces(eps, true, classified));
   // A scene bonded on every face is one sparse solve (core/solvers/bonded_solve.h), one with a body
   // held by its bondlines alone the sparse Newton (core/solvers/sparse_newton.h): nothing to condense
   // unless that stops short.
@@ -175,18 +227,22 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
   SceneRecord& r = scene.record;
   // An engineer's glue's law depends on its thickness (SPEC §1.3): then the id and the record say which.
   const double law_thickness = bulk.has_engineer_glue() ? id_thickness(spec, eps) : 0.0;
-  r = record_scene(scene_id(spec, "limit", law_thickness, solver), bulk.model(), problem, scene.report, status_tolerance);
+  r = record_scene(scene_id(spec, "limit", law_thickness, solver) + (classified ? "-classified" : ""), bulk.model(),
+                   problem, scene.report, status_tolerance);
   for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
     const InterfaceFields& S = r.interfaces[i];
-    scene.bondlines.push_back({spec.interfaces[i].name, problem.interfaces()[i].law, 0.0, {}, S.status});
+    scene.bondlines.push_back({spec.interfaces[i].name, problem.interfaces()[i].law,
+                               bulk.classified_law(static_cast<int>(i), eps), 0.0, {}, S.status});
     add(scene.limit, S.counts());
   }
   add_attributes(r, bulk, scene.bondlines, "limit", 0.0, bulk.meshes().meshing_time_s);
   if (law_thickness > 0) r.numbers["law_thickness"] = law_thickness;
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   scene.loads = applied_load_resultants(bulk.model());
-  scene.carries_load = !all_open(scene.bondlines);
+  measure_carried(bulk, bulk.model(), scene);
+  scene.carries_load = !all_open(scene.bondlines) && carries(scene);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
+  record_answer_admissibility(r);
   return scene;
 }
 
@@ -210,10 +266,11 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   std::size_t k = 0;
   bool first_layer = true;
   for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
-    SceneBondline b{spec.interfaces[i].name, bulk.limit_law(static_cast<int>(i), layer.thickness[i]), layer.thickness[i],
-                    layer.moduli[i], {}};
+    const int bi = static_cast<int>(i);
+    SceneBondline b{spec.interfaces[i].name, bulk.limit_law(bi, layer.thickness[i]),
+                    bulk.classified_law(bi, layer.thickness[i]), layer.thickness[i], layer.moduli[i], {}};
     if (layer.layer_body[i] < 0) {
-      b.law = problem.interfaces()[k].law;
+      b.law = b.classified = problem.interfaces()[k].law;
       b.status = r.interfaces[k++].status;
       add(scene.counts.combined, r.interfaces[k - 1].counts());
     } else {
@@ -243,9 +300,11 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   add_attributes(r, bulk, scene.bondlines, "layer", eps > 0 ? eps : id_thickness(spec, eps), meshing);
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   scene.loads = applied_load_resultants(layer.model);
-  scene.carries_load = !all_open(scene.bondlines);
+  measure_carried(bulk, layer.model, scene);
+  scene.carries_load = !all_open(scene.bondlines) && carries(scene);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
-  record_film_admissibility(r);
+  record_film_admissibility(r, layer_face_roles(spec, layer));
+  record_answer_admissibility(r);
   return scene;
 }
 
@@ -297,12 +356,22 @@ void write_scene_file_scene(H5Writer& file, const SceneFileScene& scene, const S
     file.attr(p, "face_plus", std::string(to_string(b.faces.plus)));
     file.attr(p, "face_minus", std::string(to_string(b.faces.minus)));
     file.attr(p, "friction", b.friction);
+    file.attr(p, "make_room", b.make_room ? "[" + std::to_string((*b.make_room)[0]) + ", " + std::to_string((*b.make_room)[1]) + "]"
+                                          : std::string("the bondline's normal (from minus into plus)"));
     file.attr(p, "law", law_kind(state.law));
     file.attr(p, "law_case", std::string(1, state.law.table1_case()));
     file.attr(p, "lambda_bar", state.law.lambda_bar);
     file.attr(p, "lambda_bar_units", stiffness);
     file.attr(p, "mu_bar", state.law.mu_bar);
     file.attr(p, "mu_bar_units", stiffness);
+    // SPEC §1.3: what the paper's 3 % / 30x rule would have chosen (not solved for, unless a
+    // classification_* attribute below says so).
+    file.attr(p, "classified_law_case", std::string(1, state.classified.table1_case()));
+    file.attr(p, "classified_lambda_bar", state.classified.lambda_bar);
+    file.attr(p, "classified_mu_bar", state.classified.mu_bar);
+    file.attr(p, "classified_description",
+              std::string("the law the paper's 3 % / 30x rule (section 3.3) would choose at this thickness; the "
+                          "scene solves lambda_bar, mu_bar instead (SPEC 1.3: an engineer's glue keeps its finite law)"));
     file.attr(p, "node_order", std::string("from one end of the bondline to the other along its curve (arc length "
                                            "increasing); node k of S, S+ and S- is the same point of the bondline"));
     const AdherentData ref = bulk.reference(static_cast<int>(i));
