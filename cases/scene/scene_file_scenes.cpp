@@ -159,14 +159,23 @@ int plus_face_of(const SceneFileBulk& bulk, const SceneRecord& record, int i) {
 }
 
 SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, const SolverOptions& options, double eps,
-                                      double status_tolerance) {
+                                      double status_tolerance, const LimitSolveExtras& extras) {
   const SceneSpec& spec = bulk.spec();
-  const ContactProblem problem(bulk.system(), bulk.limit_interfaces(eps));
+  std::vector<Interface> interfaces = bulk.limit_interfaces(eps);
+  if (!extras.laws.empty()) {
+    if (extras.laws.size() != interfaces.size())
+      throw std::invalid_argument("solve_scene_file_limit: one law per bondline (" + std::to_string(interfaces.size()) + ")");
+    for (std::size_t i = 0; i < interfaces.size(); ++i) interfaces[i].law = extras.laws[i];
+  }
+  const ContactProblem problem(bulk.system(), std::move(interfaces));
   // A scene bonded on every face is one sparse solve (core/solvers/bonded_solve.h): nothing to condense.
-  const CondensedInterface* condensed =
-      solver == SolverKind::Fast && !every_interface_bonded(problem) ? &bulk.condensed() : nullptr;
+  // Its factorisation is kept for the first-order answer's one extra substitution.
+  const bool bonded = solver == SolverKind::Fast && every_interface_bonded(problem);
+  const CondensedInterface* condensed = solver == SolverKind::Fast && !bonded ? &bulk.condensed() : nullptr;
+  std::unique_ptr<MixedSystem> mixed;
+  if (bonded) mixed = std::make_unique<MixedSystem>(problem);
   SceneFileScene scene;
-  scene.report = run_solver(problem, condensed, solver, options);
+  scene.report = bonded ? solve_bonded(problem, options, mixed.get()) : run_solver(problem, condensed, solver, options);
   SceneRecord& r = scene.record;
   // An engineer's glue's law depends on its thickness (SPEC §1.3): then the id and the record say which.
   const double law_thickness = bulk.has_engineer_glue() ? id_thickness(spec, eps) : 0.0;
@@ -182,6 +191,8 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
   scene.loads = applied_load_resultants(bulk.model());
   scene.carries_load = !all_open(scene.bondlines);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
+  if (extras.first_order)
+    scene.first_order = scene_first_order(bulk, problem, scene.report, r.id, mixed.get(), eps, status_tolerance);
   return scene;
 }
 

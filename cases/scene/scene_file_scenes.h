@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cases/layer_scene.h"
+#include "cases/scene/scene_first_order.h"
 #include "cases/scene/scene_model.h"
 #include "core/fem/linear_system.h"
 #include "core/interface/classifier.h"
@@ -79,10 +80,21 @@ struct SceneFileScene {
   std::vector<SceneBondline> bondlines;
   std::map<std::string, Eigen::Vector2d> loads;  // each load group's resultant force (force unit per mm)
   bool carries_load = true;   // false: every bondline node is open (SPEC §5)
+  SceneFirstOrder first_order;  // limit mode, when asked: the layer's first-order answer (SPEC §3 S6)
+};
+
+// What a limit solve may do beyond its bondlines' own laws.
+struct LimitSolveExtras {
+  // One law per bondline, solved instead of bulk.limit_law(i, eps) (empty: those): a study that
+  // states the law it compares (the validity map, SPEC §3 S3) gives it here.
+  std::vector<InterfaceLaw> laws;
+  // Also the first-order answer of the layers of thickness eps behind the laws (SPEC §3 S6).
+  bool first_order = false;
 };
 
 SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, const SolverOptions& options,
-                                      double eps = 0, double status_tolerance = default_status_tolerance);
+                                      double eps = 0, double status_tolerance = default_status_tolerance,
+                                      const LimitSolveExtras& extras = {});
 // Throws std::invalid_argument for an ε the joint's geometry does not allow.
 SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, SolverKind solver,
                                       const SolverOptions& options, double status_tolerance = default_status_tolerance);

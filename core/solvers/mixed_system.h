@@ -24,6 +24,7 @@ namespace thinlayer {
 class MixedSystem {
  public:
   explicit MixedSystem(const ContactProblem& problem);
+  const ContactProblem& problem() const { return problem_; }
 
   struct Answer {
     Eigen::VectorXd u;                  // free DOFs, mm
@@ -35,6 +36,14 @@ class MixedSystem {
   // One sparse LU with these statuses (one per node of the problem, as the active-set methods
   // name them).
   Answer solve(const std::vector<Active>& statuses);
+
+  // The same statuses' system with another right-hand side, on the factorisation of the last
+  // solve() (one forward and back substitution, refined): body_forces (free DOFs, daN) on the
+  // equilibrium rows, row_values on each interface row that solve() made a jump equation (d = ...,
+  // mm; the force rows stay r = 0 and r_T = ∓f r_N). Nothing of the scene's own loads or imposed
+  // jumps: the answer is the response to this load alone (core/solvers/first_order_layer.h's
+  // correction, SPEC §3 S6). Throws std::logic_error before any solve().
+  Answer solve_again(const Eigen::VectorXd& body_forces, const Eigen::VectorXd& row_values) const;
 
  private:
   // One entry of a status row: where its value lives in A, and what it is.
@@ -55,6 +64,9 @@ class MixedSystem {
   Eigen::SparseMatrix<double> A_;
   std::vector<StatusEntry> status_entries_;
   SparseLU lu_;
+  std::vector<std::pair<bool, bool>> jump_rows_;  // of the last solve(): which rows are equations d = ...
+  bool factored_ = false;
+  bool singular_ = false;
 };
 
 }  // namespace thinlayer
