@@ -13,9 +13,9 @@ namespace {
 
 bool is_layer(const std::string& body) { return body == "layer" || body.rfind("layer-", 0) == 0; }
 
-// The element size along S at each node of an interface (a chain in node order): the mean of the
-// node's two segments, its one segment at either end.
-Eigen::VectorXd element_sizes(const InterfaceFields& f) {
+}  // namespace
+
+Eigen::VectorXd element_sizes_along(const InterfaceFields& f) {
   const Eigen::Index m = f.x.rows();
   Eigen::VectorXd h = Eigen::VectorXd::Zero(m);
   for (Eigen::Index k = 0; k < m; ++k) {
@@ -30,6 +30,8 @@ Eigen::VectorXd element_sizes(const InterfaceFields& f) {
   }
   return h;
 }
+
+namespace {
 
 // The largest |principal strain| of a Q1 cell at its centre.
 double principal_strain(const SceneRecord& r, int cell) {
@@ -49,10 +51,12 @@ double principal_strain(const SceneRecord& r, int cell) {
 
 }  // namespace
 
-FilmAdmissibility film_admissibility(const SceneRecord& r) {
+FilmAdmissibility film_admissibility(const SceneRecord& r, const LayerFaceRoles& roles) {
   FilmAdmissibility film;
   for (const InterfaceFields& f : r.interfaces) {
-    const Eigen::VectorXd h = element_sizes(f);
+    if (roles.bonded_faces.count(f.name)) continue;  // a tied face does not slip
+    film.has_contact_face = true;
+    const Eigen::VectorXd h = element_sizes_along(f);
     for (Eigen::Index k = 0; k < f.jump_T.size(); ++k) {
       if (!(h[k] > 0)) continue;
       const double slip = std::abs(f.jump_T[k]) / h[k];
@@ -63,24 +67,49 @@ FilmAdmissibility film_admissibility(const SceneRecord& r) {
     }
   }
   if (r.cells.cols() == 4)
-    for (Eigen::Index c = 0; c < r.cells.rows(); ++c)
-      if (is_layer(r.body_names.at(r.cell_body.at(c))))
-        film.strain_max = std::max(film.strain_max, principal_strain(r, static_cast<int>(c)));
+    for (Eigen::Index c = 0; c < r.cells.rows(); ++c) {
+      const std::string& body = r.body_names.at(r.cell_body.at(c));
+      if (!is_layer(body)) continue;
+      const double strain = principal_strain(r, static_cast<int>(c));
+      if (roles.glued_layers.count(body)) {
+        film.has_glue = true;
+        film.glue_strain_max = std::max(film.glue_strain_max, strain);
+      } else {
+        film.has_film = true;
+        film.strain_max = std::max(film.strain_max, strain);
+      }
+    }
   return film;
 }
 
-void record_film_admissibility(SceneRecord& record) {
-  const FilmAdmissibility film = film_admissibility(record);
-  record.numbers["film_slip_over_h"] = film.slip_over_h;
-  record.numbers["film_strain_max"] = film.strain_max;
+void record_film_admissibility(SceneRecord& record, const LayerFaceRoles& roles) {
+  const FilmAdmissibility film = film_admissibility(record, roles);
+  if (film.has_contact_face) {
+    record.numbers["film_slip_over_h"] = film.slip_over_h;
+    if (!film.slip_where.empty()) record.text["film_slip_where"] = film.slip_where;
+  }
+  if (film.has_film) record.numbers["film_strain_max"] = film.strain_max;
+  if (film.has_glue) record.numbers["glue_strain_max"] = film.glue_strain_max;
 }
 
 std::string film_line(const SceneRecord& record) {
-  if (!record.numbers.count("film_slip_over_h")) return "";
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "film: largest slip %.3g elements along S, largest strain %.3g",
-                record.numbers.at("film_slip_over_h"), record.numbers.at("film_strain_max"));
-  return buf;
+  const auto& n = record.numbers;
+  std::string line;
+  char buf[160];
+  if (n.count("film_slip_over_h")) {
+    std::snprintf(buf, sizeof buf, "film: largest slip %.3g elements along S (contact faces)", n.at("film_slip_over_h"));
+    line = buf;
+  }
+  if (n.count("film_strain_max")) {
+    std::snprintf(buf, sizeof buf, "%slargest strain %.3g", line.empty() ? "film: " : ", ", n.at("film_strain_max"));
+    line += buf;
+  }
+  if (n.count("glue_strain_max")) {
+    std::snprintf(buf, sizeof buf, "%sglue: linear elastic glue assumed; peak strain %.3g", line.empty() ? "" : "; ",
+                  n.at("glue_strain_max"));
+    line += buf;
+  }
+  return line;
 }
 
 std::string film_warning(const FilmAdmissibility& film) {
@@ -102,8 +131,12 @@ std::string film_warning(const FilmAdmissibility& film) {
 }
 
 std::string film_warning(const SceneRecord& record) {
-  if (!record.numbers.count("film_slip_over_h")) return "";
-  return film_warning(film_admissibility(record));
+  FilmAdmissibility film;  // the numbers recorded with the faces' roles
+  const auto& n = record.numbers;
+  if (n.count("film_slip_over_h")) film.slip_over_h = n.at("film_slip_over_h");
+  if (n.count("film_strain_max")) film.strain_max = n.at("film_strain_max");
+  if (const auto where = record.text.find("film_slip_where"); where != record.text.end()) film.slip_where = where->second;
+  return film_warning(film);
 }
 
 }  // namespace thinlayer

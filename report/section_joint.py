@@ -51,8 +51,8 @@ def joint_summary(ctx, study, name, pairs):
         f"lengths in mm, stresses in {esc(stress)}, forces in {esc(force)} per mm of thickness). Both modes on one mesh: "
         "the <b>limit law</b> on each bondline, and the <b>meshed layer</b> of thickness ε whose plus adherent moved away "
         "from the minus one by ε to make room for it. " +
-        ("Its glue is an engineer's glue (fixed E, ν): at each thickness t the same glue, and the limit law SPEC §1.3 "
-         "chooses for that t (λ_g/t and μ_g/t against the adherents' λ_m/L, μ_m/L)." if attr(study, "family") == "engineer"
+        ("Its glue is an engineer's glue (fixed E, ν): at each thickness t the same glue, and its own finite springs "
+         "at that t, K_N = (λ_g + 2μ_g)/t, K_T = μ_g/t (SPEC §1.3: never a 0 or ∞ cut-off)." if attr(study, "family") == "engineer"
          else "Its glue is the paper's scaled family (λ_ε = ε^γ λ_g, μ_ε = ε^δ μ_g): one limit law for every ε."))]
     rows = []
     for bname, g in bondline_groups_of(limit):

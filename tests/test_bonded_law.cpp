@@ -1,6 +1,6 @@
 // Bonded faces and the glue (SPEC §1.6, §1.3, §5): the bilateral law's natural map and statuses,
-// the limit law of each combination of faces, and an engineer's glue (E, ν ↔ Lamé; its law by the
-// §1.3 classification at its thickness). Every expected value is computed by hand here.
+// the limit law of each combination of faces, and an engineer's glue (E, ν ↔ Lamé; its own finite
+// law at its thickness, and what the §3.3 classification would choose instead). Every expected value is computed by hand here.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -97,26 +97,38 @@ TEST(Glue, YoungAndPoissonToLameAndBack) {
   EXPECT_THROW(lame_from_young(-1, 0.3), std::invalid_argument);
 }
 
-// An engineer's glue keeps its moduli at every thickness; its limit law is §1.3's at that
-// thickness: λ_g/t and μ_g/t against λ_m/L, μ_m/L, 0 below 3 %, ∞ above 30 times.
-TEST(Glue, EngineersGlueLawBySection1_3AtItsThickness) {
+// An engineer's glue keeps its moduli at every thickness; its limit law is its own finite springs
+// at that thickness, λ̄ = λ_g/t, μ̄ = μ_g/t (SPEC §1.3), never a 0 or ∞ cut-off. The paper's 3 % /
+// 30x rule is what classified_law() says it would choose: λ_g/t, μ_g/t against λ_m/L, μ_m/L.
+TEST(Glue, EngineersGlueKeepsItsFiniteLawAtEveryThickness) {
   const Glue g = Glue::engineer(3000, 0.35, 0.2);
   const LameModuli m = lame_from_young(3000, 0.35);
   EXPECT_EQ(g.at(0.2).lambda, m.lambda);
   EXPECT_EQ(g.at(0.002).mu, m.mu);  // the same glue thinner, not a softer one
   const AdherentData aluminium{51083.0, 26316.0, 1.5};  // λ_m/L = 34055, μ_m/L = 17544 MPa/mm
   const LayerFaces bonded{FaceHold::Bonded, FaceHold::Bonded};
-  // t = 0.2: λ_g/t = 12963 (0.38 of the reference), μ_g/t = 5556 (0.32): both finite, kept.
-  const InterfaceLaw at_02 = g.limit_law(0.2, aluminium, bonded, 0.0);
-  EXPECT_TRUE(at_02.bilateral);
-  EXPECT_NEAR(at_02.lambda_bar, m.lambda / 0.2, 1e-9);
-  EXPECT_NEAR(at_02.mu_bar, m.mu / 0.2, 1e-9);
-  // t = 0.002: λ_g/t = 1.30e6, 38 times the reference: ∞; μ_g/t = 5.56e5, 31.7 times: ∞.
-  const InterfaceLaw at_0002 = g.limit_law(0.002, aluminium, bonded, 0.0);
-  EXPECT_TRUE(std::isinf(at_0002.lambda_bar));
-  EXPECT_TRUE(std::isinf(at_0002.mu_bar));
-  // t = 200 mm: μ_g/t = 5.56, 3.2e-4 of the reference: 0.
-  EXPECT_EQ(g.limit_law(200, aluminium, bonded, 0.0).mu_bar, 0.0);
+  for (double t : {0.2, 0.002, 200.0}) {
+    const InterfaceLaw law = g.limit_law(t, aluminium, bonded, 0.0);
+    EXPECT_TRUE(law.bilateral);
+    EXPECT_NEAR(law.lambda_bar, m.lambda / t, 1e-12 * m.lambda / t) << "t " << t;
+    EXPECT_NEAR(law.mu_bar, m.mu / t, 1e-12 * m.mu / t) << "t " << t;
+    EXPECT_NEAR(law.K_N(), (m.lambda + 2 * m.mu) / t, 1e-12 * m.lambda / t);
+    EXPECT_EQ(law.table1_case(), 'd') << "t " << t;
+  }
+  // t = 0.2: λ_g/t = 12963 (0.38 of the reference), μ_g/t = 5556 (0.32): the rule keeps both.
+  const InterfaceLaw rule_02 = g.classified_law(0.2, aluminium, bonded, 0.0);
+  EXPECT_NEAR(rule_02.lambda_bar, m.lambda / 0.2, 1e-9);
+  EXPECT_NEAR(rule_02.mu_bar, m.mu / 0.2, 1e-9);
+  // t = 0.002: λ_g/t = 1.30e6, 38 times the reference; μ_g/t = 5.56e5, 31.7 times: the rule says ∞.
+  const InterfaceLaw rule_0002 = g.classified_law(0.002, aluminium, bonded, 0.0);
+  EXPECT_TRUE(std::isinf(rule_0002.lambda_bar));
+  EXPECT_TRUE(std::isinf(rule_0002.mu_bar));
+  // t = 200 mm: μ_g/t = 5.56, 3.2e-4 of the reference: the rule says 0.
+  EXPECT_EQ(g.classified_law(200, aluminium, bonded, 0.0).mu_bar, 0.0);
+  // The paper's family: classified_law is its Table 1 law.
+  const Glue paper = Glue::scaled(1, 1.5, 4500, 5400);
+  EXPECT_EQ(paper.classified_law(1e-3, aluminium, LayerFaces{}, 0.5).table1_case(), 'c');
+  EXPECT_EQ(paper.limit_law(1e-3, aluminium, LayerFaces{}, 0.5).table1_case(), 'c');
 }
 
 // The paper's family: λ_ε = ε^γ λ_g, μ_ε = ε^δ μ_g; the limit law Table 1's whatever ε.

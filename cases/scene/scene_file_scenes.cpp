@@ -1,5 +1,6 @@
 #include "cases/scene/scene_file_scenes.h"
 
+#include "cases/answer_admissibility.h"
 #include "cases/film_admissibility.h"
 
 #include <chrono>
@@ -68,6 +69,21 @@ std::string scene_id(const SceneSpec& spec, const std::string& mode, double eps,
   return id.str();
 }
 
+// Which faces of the layers are bonded, and which layers are glued (a bonded face): SPEC §1.5's
+// film admissibility is for contact faces and films only (cases/film_admissibility.h).
+LayerFaceRoles layer_face_roles(const SceneSpec& spec, const SceneLayerModel& layer) {
+  LayerFaceRoles roles;
+  for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
+    if (layer.layer_body[i] < 0) continue;
+    const LayerFaces& faces = spec.interfaces[i].faces;
+    const int k = static_cast<int>(i);
+    if (faces.plus == FaceHold::Bonded) roles.bonded_faces.insert(interface_name(spec, k, "S+"));
+    if (faces.minus == FaceHold::Bonded) roles.bonded_faces.insert(interface_name(spec, k, "S-"));
+    if (faces.any_bonded()) roles.glued_layers.insert(layer.model.bodies[layer.layer_body[i]].name);
+  }
+  return roles;
+}
+
 bool all_open(const std::vector<SceneBondline>& bondlines) {
   for (const SceneBondline& b : bondlines)
     for (int s : b.status)
@@ -116,11 +132,18 @@ InterfaceLaw SceneFileBulk::limit_law(int i, double eps) const {
   return b.glue_model().limit_law(t, reference(i), b.faces, b.friction);
 }
 
-std::vector<Interface> SceneFileBulk::limit_interfaces(double eps, bool with_laws) const {
+InterfaceLaw SceneFileBulk::classified_law(int i, double eps) const {
+  const SceneInterfaceSpec& b = spec_.interfaces.at(i);
+  if (!b.glue) return limit_law(i, eps);
+  return b.glue_model().classified_law(eps > 0 ? eps : b.glue->thickness, reference(i), b.faces, b.friction);
+}
+
+std::vector<Interface> SceneFileBulk::limit_interfaces(double eps, bool with_laws, bool classified) const {
   std::vector<Interface> out;
   for (std::size_t i = 0; i < spec_.interfaces.size(); ++i) {
     const int k = static_cast<int>(i);
-    out.push_back(make_scene_limit_interface(spec_, model_, k, S_[i], with_laws ? limit_law(k, eps) : InterfaceLaw{}));
+    const InterfaceLaw law = !with_laws ? InterfaceLaw{} : classified ? classified_law(k, eps) : limit_law(k, eps);
+    out.push_back(make_scene_limit_interface(spec_, model_, k, S_[i], law));
   }
   return out;
 }
@@ -141,6 +164,13 @@ void check_layer_mode(const SceneFileBulk& bulk, double eps) {
   if (eps == 0) make_scene_layer_model(spec, bulk.meshes(), bulk.interface_nodes(), 0.0);  // each glue's own thickness
 }
 
+LoadPath scene_load_path(const SceneFileBulk& bulk, const std::string& mode, double eps) {
+  const std::string& force = bulk.spec().units.force;
+  if (mode == "limit") return check_load_path(bulk.model(), bulk.limit_interfaces(eps), force);
+  const SceneLayerModel layer = make_scene_layer_model(bulk.spec(), bulk.meshes(), bulk.interface_nodes(), eps);
+  return check_load_path(layer.model, layer.interfaces, force);
+}
+
 const CondensedInterface& SceneFileBulk::condensed() {
   if (!condensed_) {
     const ContactProblem geometry(*system_, limit_interfaces(0, /*with_laws=*/false));
@@ -159,9 +189,9 @@ int plus_face_of(const SceneFileBulk& bulk, const SceneRecord& record, int i) {
 }
 
 SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, const SolverOptions& options, double eps,
-                                      double status_tolerance, const LimitSolveExtras& extras) {
+                                      double status_tolerance, bool classified, const LimitSolveExtras& extras) {
   const SceneSpec& spec = bulk.spec();
-  std::vector<Interface> interfaces = bulk.limit_interfaces(eps);
+  std::vector<Interface> interfaces = bulk.limit_interfaces(eps, true, classified);
   if (!extras.laws.empty()) {
     if (extras.laws.size() != interfaces.size())
       throw std::invalid_argument("solve_scene_file_limit: one law per bondline (" + std::to_string(interfaces.size()) + ")");
@@ -179,10 +209,12 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
   SceneRecord& r = scene.record;
   // An engineer's glue's law depends on its thickness (SPEC §1.3): then the id and the record say which.
   const double law_thickness = bulk.has_engineer_glue() ? id_thickness(spec, eps) : 0.0;
-  r = record_scene(scene_id(spec, "limit", law_thickness, solver), bulk.model(), problem, scene.report, status_tolerance);
+  r = record_scene(scene_id(spec, "limit", law_thickness, solver) + (classified ? "-classified" : ""), bulk.model(),
+                   problem, scene.report, status_tolerance);
   for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
     const InterfaceFields& S = r.interfaces[i];
-    scene.bondlines.push_back({spec.interfaces[i].name, problem.interfaces()[i].law, 0.0, {}, S.status});
+    scene.bondlines.push_back({spec.interfaces[i].name, problem.interfaces()[i].law,
+                               bulk.classified_law(static_cast<int>(i), eps), 0.0, {}, S.status});
     add(scene.limit, S.counts());
   }
   add_attributes(r, bulk, scene.bondlines, "limit", 0.0, bulk.meshes().meshing_time_s);
@@ -191,6 +223,7 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
   scene.loads = applied_load_resultants(bulk.model());
   scene.carries_load = !all_open(scene.bondlines);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
+  record_answer_admissibility(r);
   if (extras.first_order)
     scene.first_order = scene_first_order(bulk, problem, scene.report, r.id, mixed.get(), eps, status_tolerance);
   return scene;
@@ -216,10 +249,11 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   std::size_t k = 0;
   bool first_layer = true;
   for (std::size_t i = 0; i < spec.interfaces.size(); ++i) {
-    SceneBondline b{spec.interfaces[i].name, bulk.limit_law(static_cast<int>(i), layer.thickness[i]), layer.thickness[i],
-                    layer.moduli[i], {}};
+    const int bi = static_cast<int>(i);
+    SceneBondline b{spec.interfaces[i].name, bulk.limit_law(bi, layer.thickness[i]),
+                    bulk.classified_law(bi, layer.thickness[i]), layer.thickness[i], layer.moduli[i], {}};
     if (layer.layer_body[i] < 0) {
-      b.law = problem.interfaces()[k].law;
+      b.law = b.classified = problem.interfaces()[k].law;
       b.status = r.interfaces[k++].status;
       add(scene.counts.combined, r.interfaces[k - 1].counts());
     } else {
@@ -251,7 +285,8 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   scene.loads = applied_load_resultants(layer.model);
   scene.carries_load = !all_open(scene.bondlines);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
-  record_film_admissibility(r);
+  record_film_admissibility(r, layer_face_roles(spec, layer));
+  record_answer_admissibility(r);
   return scene;
 }
 
@@ -309,6 +344,14 @@ void write_scene_file_scene(H5Writer& file, const SceneFileScene& scene, const S
     file.attr(p, "lambda_bar_units", stiffness);
     file.attr(p, "mu_bar", state.law.mu_bar);
     file.attr(p, "mu_bar_units", stiffness);
+    // SPEC §1.3: what the paper's 3 % / 30x rule would have chosen (not solved for, unless a
+    // classification_* attribute below says so).
+    file.attr(p, "classified_law_case", std::string(1, state.classified.table1_case()));
+    file.attr(p, "classified_lambda_bar", state.classified.lambda_bar);
+    file.attr(p, "classified_mu_bar", state.classified.mu_bar);
+    file.attr(p, "classified_description",
+              std::string("the law the paper's 3 % / 30x rule (section 3.3) would choose at this thickness; the "
+                          "scene solves lambda_bar, mu_bar instead (SPEC 1.3: an engineer's glue keeps its finite law)"));
     file.attr(p, "node_order", std::string("from one end of the bondline to the other along its curve (arc length "
                                            "increasing); node k of S, S+ and S- is the same point of the bondline"));
     const AdherentData ref = bulk.reference(static_cast<int>(i));

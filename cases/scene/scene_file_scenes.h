@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cases/layer_scene.h"
+#include "cases/scene/load_path.h"
 #include "cases/scene/scene_first_order.h"
 #include "cases/scene/scene_model.h"
 #include "core/fem/linear_system.h"
@@ -39,12 +40,17 @@ class SceneFileBulk {
   // SPEC §1.3's L (mm, cases/scene/scene_reference.h) and bondline i's reference.
   double characteristic_length() const { return L_; }
   AdherentData reference(int i) const;
-  // The limit law of bondline i standing for layers of thickness eps (0: each glue's own).
+  // The limit law of bondline i standing for layers of thickness eps (0: each glue's own): an
+  // engineer's glue's finite springs at that thickness (SPEC §1.3), Table 1's for the paper's family.
   InterfaceLaw limit_law(int i, double eps) const;
+  // What the paper's 3 % / 30x rule would choose instead for bondline i at eps (SPEC §1.3: shown
+  // beside the law, with the distance it would cost; equal to limit_law but for an engineer's glue).
+  InterfaceLaw classified_law(int i, double eps) const;
   // Some bondline gives an engineer's glue (its limit law depends on the thickness).
   bool has_engineer_glue() const;
-  // Every bondline in limit mode, with its law at eps (geometry only: InterfaceLaw{} laws if !with_laws).
-  std::vector<Interface> limit_interfaces(double eps, bool with_laws = true) const;
+  // Every bondline in limit mode, with its law at eps (geometry only: InterfaceLaw{} laws if !with_laws;
+  // the paper's rule's laws, classified_law, if `classified`).
+  std::vector<Interface> limit_interfaces(double eps, bool with_laws = true, bool classified = false) const;
 
  private:
   SceneSpec spec_;
@@ -62,10 +68,16 @@ class SceneFileBulk {
 // the joint can hold (saying why not).
 void check_layer_mode(const SceneFileBulk& bulk, double eps);
 
+// Does every load have a path to a support, and can friction hold what friction alone holds?
+// (cases/scene/load_path.h) On the model of `mode` ("limit" or "layer") at thickness eps (0: each
+// glue's own), before the solve.
+LoadPath scene_load_path(const SceneFileBulk& bulk, const std::string& mode, double eps);
+
 // What a scene did on one bondline.
 struct SceneBondline {
   std::string name;        // its group in the list form, "" in the one-bondline form
   InterfaceLaw law;        // limit mode: the law solved; layer mode: the limit law of that layer
+  InterfaceLaw classified; // what the paper's 3 % / 30x rule would choose for it (SPEC §1.3)
   double thickness = 0;    // layer mode: the layer's (mm); 0 in limit mode or for a law only
   LameModuli moduli;       // layer mode: λ_ε, μ_ε
   std::vector<int> status;  // per node of S: limit mode S's, layer mode the combined one
@@ -92,9 +104,11 @@ struct LimitSolveExtras {
   bool first_order = false;
 };
 
+// `classified`: solve with the laws the paper's 3 % / 30x rule would choose (classified_law) instead of
+// the scene's own, to measure what that choice costs (SPEC §1.3); its id ends in "-classified".
 SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, const SolverOptions& options,
                                       double eps = 0, double status_tolerance = default_status_tolerance,
-                                      const LimitSolveExtras& extras = {});
+                                      bool classified = false, const LimitSolveExtras& extras = {});
 // Throws std::invalid_argument for an ε the joint's geometry does not allow.
 SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, SolverKind solver,
                                       const SolverOptions& options, double status_tolerance = default_status_tolerance);

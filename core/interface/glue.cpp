@@ -71,14 +71,22 @@ LameModuli Glue::at(double eps) const {
 
 InterfaceLaw Glue::limit_law(double eps, const AdherentData& reference, const LayerFaces& faces,
                              double friction) const {
-  if (engineer_) {
+  if (engineer_) {  // SPEC §1.3: the line's own finite springs, K_N = (λ_g + 2μ_g)/ε, K_T = μ_g/ε
+    (void)reference;
     const LameModuli m = at(eps);
-    const InterfaceLaw chosen = classify_layer({eps, m.lambda, m.mu}, reference, friction);  // SPEC §1.3
-    return layer_limit_law(chosen.lambda_bar, chosen.mu_bar, faces, friction);
+    return layer_limit_law(m.lambda / eps, m.mu / eps, faces, friction);
   }
   // lim ε^(p−1) g as ε → 0: ∞ below p = 1, g at 1, 0 above (paper §3.1.8, Table 1); 0 for g = 0.
   auto limit_ratio = [](double p, double g) { return g == 0 ? 0.0 : p < 1 ? inf : p > 1 ? 0.0 : g; };
   return layer_limit_law(limit_ratio(gamma_, lambda_g_), limit_ratio(delta_, mu_g_), faces, friction);
+}
+
+InterfaceLaw Glue::classified_law(double eps, const AdherentData& reference, const LayerFaces& faces,
+                                  double friction) const {
+  if (!engineer_) return limit_law(eps, reference, faces, friction);
+  const LameModuli m = at(eps);
+  const InterfaceLaw chosen = classify_layer({eps, m.lambda, m.mu}, reference, friction);  // paper §3.3
+  return layer_limit_law(chosen.lambda_bar, chosen.mu_bar, faces, friction);
 }
 
 }  // namespace thinlayer

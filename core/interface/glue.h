@@ -9,9 +9,13 @@
 //    modulus per unit thickness (daN/mm³): the glue softens as it thins. Its limit law is
 //    Table 1's, λ̄ = lim λ_ε/ε and μ̄ = lim μ_ε/ε, whatever ε;
 //  - an engineer's glue: fixed E_g, ν_g (λ_g, μ_g by the 3D relations), at a nominal thickness t.
-//    A thinner line of it is the same glue thinner. Its limit law is §1.3's at that thickness:
-//    λ_g/ε and μ_g/ε against the adherents' λ_m/L and μ_m/L (0 below 3 %, ∞ above 30 times, the
-//    ratio in between), so the law stiffens as the line thins.
+//    A thinner line of it is the same glue thinner. Its limit law is the finite spring law of
+//    that line at its own thickness (SPEC §1.3): λ̄ = λ_g/ε, μ̄ = μ_g/ε, so K_N = (λ_g + 2μ_g)/ε and
+//    K_T = μ_g/ε — Table 1's case (d), never a 0 or ∞ cut-off. Why: the cut-offs belong to the
+//    paper's family, whose moduli go to 0 or ∞ with ε; a real glue's do not, and cutting μ̄ to 0
+//    (a 0.5 mm epoxy line between 1 mm steel sheets: μ_g/t is 2.8 % of μ_m/L) leaves a lap joint
+//    with no shear path at all. The law stiffens as the line thins. What the paper's 3 % / 30×
+//    rule would choose instead is classified_law(), printed beside it, never solved for it.
 //
 // Faces (SPEC §1.6): each face of the layer is in contact with its adherent (Signorini-Coulomb,
 // the paper's) or bonded to it (tied). The limit law of each combination (derived in the README,
@@ -60,9 +64,13 @@ class Glue {
   // The layer's moduli at thickness eps (mm).
   LameModuli at(double eps) const;
   // The limit law standing for the layer of thickness eps: Table 1's for the scaled family
-  // (eps unused), §1.3's classification at eps for an engineer's glue, with `reference` the
-  // adherents' moduli and characteristic length.
+  // (eps unused), the finite law λ̄ = λ_g/eps, μ̄ = μ_g/eps for an engineer's glue (SPEC §1.3;
+  // `reference` unused then: it is kept so both families answer the same call).
   InterfaceLaw limit_law(double eps, const AdherentData& reference, const LayerFaces& faces, double friction) const;
+  // What the paper's §3.3 rule would choose at thickness eps: λ_g/eps and μ_g/eps against the
+  // adherents' λ_m/L and μ_m/L (`reference`), 0 below 3 %, ∞ above 30 times, the ratio in
+  // between. For the scaled family it is limit_law itself (its Table 1 class).
+  InterfaceLaw classified_law(double eps, const AdherentData& reference, const LayerFaces& faces, double friction) const;
   // An engineer's glue: its nominal thickness t (mm); the scaled family has none (0).
   double nominal_thickness() const { return engineer_ ? thickness_ : 0.0; }
   // The exponents of λ_ε and μ_ε in ε: (γ, δ), or (0, 0) for fixed moduli (they choose the

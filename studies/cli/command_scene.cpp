@@ -1,5 +1,6 @@
 #include "studies/cli/command_scene.h"
 
+#include "cases/answer_admissibility.h"
 #include "cases/film_admissibility.h"
 
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "studies/cli/options.h"
 #include "studies/cli/results_file.h"
 #include "studies/cli/scene_report.h"
+#include "studies/drivers/classification_cost.h"
 #include "studies/drivers/scene_file_study.h"
 #include "studies/drivers/scene_solve_output.h"
 #include "studies/parallel/process_group.h"
@@ -75,6 +77,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   SceneSolveInput in;
   std::vector<InputFile> inputs;
   std::unique_ptr<SceneFileBulk> bulk;
+  LoadPath load_path;
   try {
     in = parse_solve(command, args);
     SceneSpec spec = read_scene_spec(in.scene);
@@ -88,6 +91,14 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (!in.vtu.empty()) check_vtu_target(in.vtu);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     check_scene_eps(*bulk, in.mode, in.eps);
+    // SPEC 1.3: a load with no path is bad input; a joint friction alone cannot hold fails (exit 1),
+    // both found before any solve.
+    load_path = scene_load_path(*bulk, in.mode, in.eps);
+    if (!load_path.no_path.empty()) throw std::invalid_argument(load_path.no_path);
+    if (const FrictionHold* over = load_path.exceeded()) {
+      std::cerr << "thinlayer solve: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+      return 1;
+    }
   } catch (const std::invalid_argument& e) {
     return fail("solve", e, 2);
   } catch (const OutputError& e) {
@@ -98,16 +109,25 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   try {
     const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options, in.eps)
                                                 : solve_scene_file_layer(*bulk, in.eps, in.solver, in.options);
+    // SPEC 1.3: what the paper's 3 % / 30x rule would have cost, solved beside (limit mode).
+    ClassificationCost cost;
+    if (in.mode == "limit") cost = classification_cost(*bulk, s, in.eps, in.options);
     if (!in.json) print_scene_solve(*bulk, in.mode, in.eps, s);
+    if (!in.json && cost.differs) std::printf("  %s\n", classification_cost_line(*bulk, s, cost).c_str());
     if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force});
     if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
-    if (in.json) std::printf("%s\n", scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu).c_str());
+    if (in.json) std::printf("%s\n", scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu, &cost).c_str());
     if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (const std::string w = film_warning(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = displacement_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = limit_slip_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!s.report.converged) {
       std::cerr << "thinlayer solve: " << s.report.message << "\n";
+      // What friction alone had to hold, where it did (the capacity was estimated within the load).
+      for (const FrictionHold& h : load_path.friction)
+        std::cerr << "thinlayer solve: " << friction_line(h, bulk->spec().units.force) << "\n";
       return 1;
     }
     return 0;
@@ -129,7 +149,8 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     if (study != "convergence" && study != "validity")
       throw std::invalid_argument("--scene applies to study convergence and study validity only");
     if (!refuse_unless_one_process("study " + study + " --scene")) return 2;
-    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes", "force"};
+    std::set<std::string> allowed = {"scene", "out", "eps", "tolerance", "threads", "quiet", "max-nodes", "force",
+                                     "peak-distance"};
     if (study == "validity") allowed.insert("bisection-steps");
     require_only(c, allowed, "study " + study + " --scene");
     const std::string scene = a.scene;
@@ -141,6 +162,11 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     if (!(options.tolerance > 0) || !(options.tolerance < 1)) throw std::invalid_argument("--tolerance must be in (0, 1)");
     options.threads = given(c, "threads") ? a.threads : 2;
     if (options.threads < 1 || options.threads > 64) throw std::invalid_argument("--threads must be in 1..64");
+    if (given(c, "peak-distance")) {
+      options.peak_distance = a.peak_distance;
+      if (!(options.peak_distance > 0) || std::isinf(options.peak_distance))
+        throw std::invalid_argument("--peak-distance must be finite and > 0 (mm)");
+    }
     options.bisection_steps = given(c, "bisection-steps") ? a.bisection_steps : 2;
     if (options.bisection_steps < 0 || options.bisection_steps > 20)
       throw std::invalid_argument("--bisection-steps must be in 0..20");
@@ -161,6 +187,14 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
       throw std::invalid_argument("scene '" + spec.name + "' gives a limit law only ('law'): it has no layer mode to study");
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     for (double e : scene_study_grid(*bulk, options)) check_layer_mode(*bulk, e);
+    // SPEC 1.3: a load with no path is bad input; a joint friction alone cannot hold fails (exit 1);
+    // judged on the limit mode (the glue's own thickness), before any of the study's solves.
+    const LoadPath path = scene_load_path(*bulk, "limit", 0.0);
+    if (!path.no_path.empty()) throw std::invalid_argument(path.no_path);
+    if (const FrictionHold* over = path.exceeded()) {
+      std::cerr << "thinlayer study: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+      return 1;
+    }
   } catch (const std::exception& e) {
     return fail("study", e, 2);
   }

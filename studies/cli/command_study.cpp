@@ -253,6 +253,11 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
             ->type_name("T")->check(decimal("tolerance")));
   group(c.add_option("--threads", a.threads, "S2/S3: layer-mode scenes solved in parallel (default 2)")
             ->type_name("N")->transform(integer("threads")));
+  group(c.add_option("--peak-distance", a.peak_distance,
+                     "with --scene: the distance d (mm) from each bondline end at which the\n"
+                     "peak peel and shear are judged (default: the larger of the glue's\n"
+                     "thickness and two elements along the bondline; the corner itself is singular)")
+            ->type_name("D")->check(decimal("peak-distance")));
   group(c.add_option("--bisection-steps", a.bisection_steps, "S3: bisection steps per bracket (default 2)")
             ->type_name("N")->transform(integer("bisection-steps")));
   group(c.add_option("--relaxation-cap", a.relaxation_cap, "dovetail: also run the relaxation solver, capped at N sweeps")
@@ -307,7 +312,9 @@ CLI::App* declare_study(CLI::App& thinlayer, StudyArgs& a) {
       "\n"
       "Your own joint: study convergence --scene FILE.json, study validity --scene FILE.json run S2\n"
       "and S3 on a scene file (README, \"Your own joint\"); options --out, --eps LIST (mm), --tolerance\n"
-      "(default 1e-10 there), --threads, --quiet, --max-nodes and (validity) --bisection-steps.");
+      "(default 1e-10 there), --threads, --quiet, --max-nodes, --peak-distance D (mm) and (validity)\n"
+      "--bisection-steps. The verdict is one line per quantity: the reactions, the adherents'\n"
+      "displacements, and the peak peel and shear at d from each bondline end.");
   c->formatter(help_formatter("usage: thinlayer study NAME [--out DIR] [options]"));
   c->set_help_flag("-h,--help", "this help");
   c->allow_extras();

@@ -13,6 +13,7 @@ struct StudyArgs {
   std::string name, out, cases, scene;
   NumberList eps, rate_eps, friction_path;
   double tolerance = 0;
+  double peak_distance = 0;  // scene studies: d of the peaks judged at a distance from the bondline ends (mm)
   int repeats = 0, relaxation_cap = 0, threads = 0, bisection_steps = 0;
   long long max_nodes = 0;
   bool quick = false, quiet = false, force = false;

@@ -95,10 +95,14 @@ Solved solve_pairs(SceneFileBulk& bulk, const std::vector<double>& eps, const Sc
   return s;
 }
 
-SceneSample sample_of(const SceneFileBulk& bulk, double eps, const SceneFileScene& layer, const SceneFileScene& limit) {
+SceneSample sample_of(const SceneFileBulk& bulk, double eps, const SceneFileScene& layer, const SceneFileScene& limit,
+                      double d) {
   SceneSample s;
   s.eps = eps;
   s.e = scene_distance(bulk, layer.record, limit.record, &s.status_diff);
+  s.verdict = verdict_distance(bulk, layer.record, limit.record, d);
+  s.layer_ends = peaks_at_distance(bulk, layer.record, d);
+  s.limit_ends = peaks_at_distance(bulk, limit.record, d);
   s.converged = layer.report.converged && limit.report.converged;
   s.residual = std::max(layer.report.residual.value(), limit.report.residual.value());
   s.time_s = layer.report.wall_time_s;
@@ -115,8 +119,8 @@ void add_peaks(const SceneFileBulk& bulk, const SceneFileScene& scene, double h,
     peaks.push_back({r.id, r.text.at("mode"), f.bondline, eps, h, bondline_peaks(f)});
 }
 
-// S3 on the samples: for each τ the bracket between samples, then bisection rounds (the
-// midpoints of every open bracket solved together).
+// S3 on the samples, per verdict quantity: for each quantity and τ the bracket between samples,
+// then bisection rounds (the midpoints of every open bracket solved together).
 void run_validity(SceneFileBulk& bulk, const SceneFileScene* shared_limit, const SceneStudyOptions& options,
                   SceneStudyResult& r, std::vector<SceneFileScene>& extra) {
   struct Job {
@@ -129,42 +133,47 @@ void run_validity(SceneFileBulk& bulk, const SceneFileScene* shared_limit, const
   bool all_converged = r.limit_converged;
   for (const SceneSample& s : by_eps) all_converged = all_converged && s.converged;
   std::vector<Job> jobs;
-  for (double tau : options.taus) {
-    Job j;
-    j.row.tau = tau;
-    j.row.converged = all_converged;
-    int within = -1;
-    for (std::size_t k = 0; k < by_eps.size(); ++k)
-      if (by_eps[k].e.at("u") <= tau) within = static_cast<int>(k);
-    if (by_eps.back().e.at("u") <= tau) {
-      j.row.status = "at_least";
-      j.row.eps_max = by_eps.back().eps;
-      j.row.error_at_eps_max = by_eps.back().e.at("u");
-    } else if (within < 0) {
-      j.row.status = "below_range";
-      j.row.eps_max = j.row.eps_beyond = by_eps.front().eps;
-      j.row.error_at_eps_max = by_eps.front().e.at("u");
-    } else {
-      j.row.status = "found";
-      const SceneSample &lo = by_eps[within], &hi = by_eps[within + 1];
-      j.bracket = {lo.eps, lo.e.at("u"), hi.eps, hi.e.at("u")};
-      j.bisect = true;
+  for (const std::string& q : verdict_quantities())
+    for (double tau : options.taus) {
+      Job j;
+      j.row.quantity = q;
+      j.row.tau = tau;
+      j.row.converged = all_converged;
+      // The limit law "stays within τ" up to ε: at every sampled thickness from the thinnest up to it
+      // (a distance that dips back under τ above a sample beyond it is no validity range).
+      int within = -1;
+      while (within + 1 < static_cast<int>(by_eps.size()) && by_eps[within + 1].verdict.at(q) <= tau) ++within;
+      if (within + 1 == static_cast<int>(by_eps.size())) {
+        j.row.status = "at_least";
+        j.row.eps_max = by_eps.back().eps;
+        j.row.error_at_eps_max = by_eps.back().verdict.at(q);
+      } else if (within < 0) {
+        j.row.status = "below_range";
+        j.row.eps_max = j.row.eps_beyond = by_eps.front().eps;
+        j.row.error_at_eps_max = by_eps.front().verdict.at(q);
+      } else {
+        j.row.status = "found";
+        const SceneSample &lo = by_eps[within], &hi = by_eps[within + 1];
+        j.bracket = {lo.eps, lo.verdict.at(q), hi.eps, hi.verdict.at(q)};
+        j.bisect = true;
+      }
+      jobs.push_back(j);
     }
-    jobs.push_back(j);
-  }
   for (int step = 0; step < options.bisection_steps; ++step) {
-    std::vector<double> round;
+    std::vector<double> round;  // each thickness once: brackets of several quantities may share a midpoint
     for (const Job& j : jobs)
-      if (j.bisect) round.push_back(log_midpoint(j.bracket));
+      if (j.bisect && std::find(round.begin(), round.end(), log_midpoint(j.bracket)) == round.end())
+        round.push_back(log_midpoint(j.bracket));
     if (round.empty()) break;
     Solved solved = solve_pairs(bulk, round, options, shared_limit);
-    std::size_t k = 0;
     for (Job& j : jobs) {
       if (!j.bisect) continue;
+      const double mid = log_midpoint(j.bracket);
+      const std::size_t k = static_cast<std::size_t>(std::find(round.begin(), round.end(), mid) - round.begin());
       const SceneFileScene& limit = shared_limit ? *shared_limit : solved.limits[k];
-      const SceneFileScene& s = solved.layers[k++];
-      const double e = scene_distance(bulk, s.record, limit.record).at("u");
-      j.bracket = narrow(j.bracket, log_midpoint(j.bracket), e, j.row.tau);
+      const SceneFileScene& s = solved.layers[k];
+      const double e = verdict_distance(bulk, s.record, limit.record, r.peak_distance).at(j.row.quantity);
+      j.bracket = narrow(j.bracket, mid, e, j.row.tau);
       j.row.converged = j.row.converged && s.report.converged && limit.report.converged;
       ++j.row.bisection_steps;
     }
@@ -203,6 +212,9 @@ void run_floor(const SceneFileBulk& bulk, double eps, const SceneStudyOptions& o
     for (const SceneInterfaceNodes& S : s.bulk->interface_nodes()) row.S_nodes += static_cast<int>(S.plus.size());
     row.eps = eps;
     row.e = scene_distance(*s.bulk, s.layer.record, s.limit.record);
+    row.verdict = verdict_distance(*s.bulk, s.layer.record, s.limit.record, r.peak_distance);
+    row.layer_ends = peaks_at_distance(*s.bulk, s.layer.record, r.peak_distance);
+    row.limit_ends = peaks_at_distance(*s.bulk, s.limit.record, r.peak_distance);
     row.converged = s.layer.report.converged && s.limit.report.converged;
     row.layer_id = s.layer.record.id;
     row.limit_id = s.limit.record.id;
@@ -275,6 +287,33 @@ void add_checks(const SceneSpec& spec, const SceneStudyOptions& options, SceneSt
   }
 }
 
+// d of the peaks at a distance from the bondline ends (SceneStudyOptions::peak_distance).
+void choose_peak_distance(const SceneFileBulk& bulk, const std::vector<double>& eps, const SceneStudyOptions& options,
+                          SceneStudyResult& r) {
+  if (options.peak_distance > 0) {
+    r.peak_distance = options.peak_distance;
+    r.peak_distance_reason = "given (--peak-distance)";
+    return;
+  }
+  double t = 0;
+  for (const SceneInterfaceSpec& i : bulk.spec().interfaces)
+    if (i.glue) t = std::max(t, i.glue->thickness);
+  const bool engineer = t > 0;
+  if (!engineer) t = eps.front();
+  // The element size along the bondlines: the scene's mesh_size, or the mean segment of its bondlines.
+  double h = bulk.spec().h_interface.value_or(0.0);
+  if (!(h > 0)) {
+    double length = 0;
+    int segments = 0;
+    for (const Interface& S : bulk.limit_interfaces(0, false))
+      for (std::size_t k = 1; k < S.nodes.size(); ++k, ++segments) length += (S.nodes[k].x - S.nodes[k - 1].x).norm();
+    h = segments ? length / segments : 0.0;
+  }
+  r.peak_distance = std::max(t, 2 * h);
+  r.peak_distance_reason = std::string("the larger of ") + (engineer ? "the glue's own thickness" : "the thickest eps of the grid") +
+                           " (" + plain(t) + " mm) and two elements of the study's mesh (2 x " + plain(h) + " mm)";
+}
+
 }  // namespace
 
 std::vector<double> scene_study_grid(const SceneFileBulk& bulk, const SceneStudyOptions& options) {
@@ -305,6 +344,7 @@ SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& o
   SceneStudyResult r;
   r.family = bulk.has_engineer_glue() ? "engineer" : "scaled";
   r.p_predicted = predicted_rate(spec);
+  choose_peak_distance(bulk, eps, options, r);
   // The paper's family: one limit scene for every ε; an engineer's glue: one per ε.
   std::optional<SceneFileScene> shared;
   if (r.family == "scaled") shared = solve_scene_file_limit(bulk, SolverKind::Fast, solver_options(options));
@@ -319,7 +359,7 @@ SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& o
   }
   const double h = spec.h_interface.value_or(0.0);
   for (std::size_t i = 0; i < eps.size(); ++i) {
-    r.samples.push_back(sample_of(bulk, eps[i], solved.layers[i], limit_of(i)));
+    r.samples.push_back(sample_of(bulk, eps[i], solved.layers[i], limit_of(i), r.peak_distance));
     add_peaks(bulk, solved.layers[i], h, r.peaks);
     if (!shared || i == 0) add_peaks(bulk, limit_of(i), h, r.peaks);
   }
@@ -345,6 +385,7 @@ SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& o
   print_scene_floor(r);
 
   std::vector<SceneFileScene> extra;
+  print_scene_ends(r);
   if (options.validity) {
     run_validity(bulk, shared ? &*shared : nullptr, options, r, extra);
     print_scene_validity(r, options.bisection_steps);

@@ -4,7 +4,10 @@
 // differences of the layer model (where the mesh floor cancels), the mesh floor itself (the
 // distance at a thickness far below the grid, at h, h/2 and h/4 along the bondlines), the peak
 // stresses of every bondline, and the largest ε at which the limit law stays within τ of the
-// layer model (bisection on log ε between the samples).
+// layer model (bisection on log ε between the samples) — judged per quantity (issue 35): the
+// reactions, the adherents' displacements, and the peak peel and peak shear at a stated distance d
+// from each bondline end (studies/tools/scene_distance.h); the corners themselves, singular in the
+// layer model, are shown under mesh refinement and not judged.
 //
 // Two kinds of glue (core/interface/glue.h). The paper's family ("layer": λ_ε = ε^γ λ_g): one
 // limit law for every ε; the predicted rate of its (γ, δ) (studies/convergence_rates.md) is
@@ -23,6 +26,7 @@
 #include "studies/tools/bondline_fields.h"
 #include "studies/tools/cauchy_fit.h"
 #include "studies/tools/rate_fit.h"
+#include "studies/tools/scene_distance.h"
 
 namespace thinlayer {
 
@@ -41,11 +45,17 @@ struct SceneStudyOptions {
   // "geometry" with "mesh_size" only; fewer than 2: none).
   int floor_levels = 3;
   double floor_eps_factor = 1e-2;
+  // The stated distance d (mm) from each bondline end at which the peak peel and shear are judged
+  // (the corner itself is singular in the layer model). 0: the larger of the glue's own thickness
+  // (the paper's family: the thickest ε of the grid) and two elements of the study's mesh.
+  double peak_distance = 0;
 };
 
 struct SceneSample {
   double eps = 0;
   std::map<std::string, double> e;  // quantity → distance to the limit mode
+  std::map<std::string, double> verdict;  // verdict quantity (scene_distance.h) → distance to the limit mode
+  EndStresses layer_ends, limit_ends;     // the peaks at d and at the corners, both modes
   int status_diff = 0;              // S nodes whose combined status differs from the limit's
   bool converged = false;           // the layer scene (and its limit scene)
   double residual = 0, time_s = 0;
@@ -54,6 +64,7 @@ struct SceneSample {
 };
 
 struct SceneValidityRow {
+  std::string quantity = "u";  // a verdict quantity (studies/tools/scene_distance.h)
   double tau = 0;
   std::string status;  // found | at_least | below_range (as studies/drivers/validity_study.h)
   double eps_max = 0, error_at_eps_max = 0, eps_beyond = 0;
@@ -67,6 +78,8 @@ struct SceneFloorRow {
   int S_nodes = 0;    // nodes on every bondline together
   double eps = 0;     // mm
   std::map<std::string, double> e;
+  std::map<std::string, double> verdict;  // the verdict quantities' distances at h
+  EndStresses layer_ends, limit_ends;     // the peaks at d and at the corners at h, both modes
   bool converged = false;
   std::string layer_id, limit_id;
 };
@@ -96,6 +109,8 @@ struct SceneStudyResult {
   std::map<std::string, std::optional<PowerLawFit>> floor_rate;     // the floor's rate in h
   std::vector<ScenePeak> peaks;
   std::optional<double> p_predicted;  // the Table 2 case with the scene's (γ, δ), if any
+  double peak_distance = 0;           // mm, d of the peaks judged at a distance from the ends
+  std::string peak_distance_reason;   // how d was chosen
   std::vector<SceneValidityRow> validity;
   std::vector<Check> checks;
 };

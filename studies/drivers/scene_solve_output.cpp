@@ -33,9 +33,18 @@ void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, doubl
                 b.plus.c_str(), b.minus.c_str(), to_string(b.faces.plus), to_string(b.faces.minus),
                 state.law.describe().c_str(), state.law.lambda_bar, state.law.mu_bar, spec.units.stiffness().c_str());
     if (!state.law.bilateral) std::printf(", f %g", state.law.friction);
-    if (b.glue)
-      std::printf("; glue E %g, nu %g, t %g mm (law by SPEC 1.3 at %g mm, L = %g mm)", b.glue->E, b.glue->nu,
-                  b.glue->thickness, eps > 0 ? eps : b.glue->thickness, bulk.characteristic_length());
+    if (b.glue) {
+      const double t = eps > 0 ? eps : b.glue->thickness;
+      std::printf("; glue E %g, nu %g, t %g mm: its own springs at %g mm, K_N = (lambda_g+2mu_g)/t = %g, K_T = mu_g/t = %g "
+                  "(SPEC 1.3)", b.glue->E, b.glue->nu, b.glue->thickness, t, state.law.K_N(), state.law.K_T());
+      const InterfaceLaw& c = state.classified;
+      if (c.table1_case() != state.law.table1_case() || c.lambda_bar != state.law.lambda_bar || c.mu_bar != state.law.mu_bar)
+        std::printf("; the paper's 3 %% / 30x rule (L = %g mm) would choose class (%c), lambda_bar %g, mu_bar %g%s",
+                    bulk.characteristic_length(), c.table1_case(), c.lambda_bar, c.mu_bar,
+                    mode == "layer" ? " (not solved here: --mode limit solves it and says what it would cost)" : "");
+      else
+        std::printf("; the paper's 3 %% / 30x rule (L = %g mm) keeps it", bulk.characteristic_length());
+    }
     if (state.thickness > 0)
       std::printf("; layer %g mm, lambda_eps %g, mu_eps %g", state.thickness, state.moduli.lambda, state.moduli.mu);
     std::printf("\n");
@@ -57,7 +66,15 @@ void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, doubl
     print_counts("S+", s.counts.plus_face);
     print_counts("S-", s.counts.minus_face);
     print_counts("combined", s.counts.combined);
-    std::printf("  %s\n", film_line(s.record).c_str());
+    if (const std::string film = film_line(s.record); !film.empty()) std::printf("  %s\n", film.c_str());
+  }
+  const auto& n = s.record.numbers;
+  if (n.count("displacement_over_size")) {
+    std::printf("  displacements: largest |u| %.3g mm, %.3g %% of the size of body '%s' (%.3g mm)",
+                n.at("displacement_max"), 100 * n.at("displacement_over_size"), s.record.text.at("displacement_body").c_str(),
+                n.at("displacement_body_size"));
+    if (n.count("slip_over_h")) std::printf("; largest slip on the bondlines %.3g elements along S", n.at("slip_over_h"));
+    std::printf("\n");
   }
   const SolveReport& r = s.report;
   const std::string outcome = r.converged ? "converged" : std::string("NOT converged (") + to_string(r.stop_cause) + ")";
@@ -84,7 +101,8 @@ void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, doubl
 }
 
 std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene_file, const std::string& mode,
-                             const SceneFileScene& s, const std::string& out, const std::string& vtu) {
+                             const SceneFileScene& s, const std::string& out, const std::string& vtu,
+                             const ClassificationCost* cost) {
   const SceneRecord& record = s.record;
   const SolveReport& report = s.report;
   nlohmann::json counts;
@@ -120,13 +138,35 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
       {"out", out.empty() ? nullptr : nlohmann::json(out)},
       {"vtu", vtu.empty() ? nullptr : nlohmann::json(vtu)},
   };
+  // Each bondline's law (K = inf is null in JSON) and what the paper's rule would choose (SPEC 1.3).
+  nlohmann::json bondlines = nlohmann::json::array();
+  for (const SceneBondline& b : s.bondlines)
+    bondlines.push_back({{"name", b.name},
+                         {"law_case", std::string(1, b.law.table1_case())},
+                         {"lambda_bar", b.law.lambda_bar},
+                         {"mu_bar", b.law.mu_bar},
+                         {"K_N", b.law.K_N()},
+                         {"K_T", b.law.K_T()},
+                         {"classified", {{"law_case", std::string(1, b.classified.table1_case())},
+                                         {"lambda_bar", b.classified.lambda_bar},
+                                         {"mu_bar", b.classified.mu_bar}}}});
+  j["bondlines"] = std::move(bondlines);
+  if (cost && cost->differs) {
+    j["classification_cost"] = cost->computed
+                                   ? nlohmann::json{{"computed", true}, {"reactions", cost->reactions}, {"u", cost->u}}
+                                   : nlohmann::json{{"computed", false}, {"not_computed", cost->not_computed}};
+  }
   if (nlohmann::json film = film_json(record); !film.is_null()) j["film"] = std::move(film);
   return j.dump();
 }
 
 nlohmann::json film_json(const SceneRecord& record) {
-  if (!record.numbers.count("film_slip_over_h")) return nullptr;
-  return {{"slip_over_h", record.numbers.at("film_slip_over_h")}, {"strain_max", record.numbers.at("film_strain_max")}};
+  const auto& n = record.numbers;
+  if (!n.count("film_slip_over_h") && !n.count("film_strain_max") && !n.count("glue_strain_max")) return nullptr;
+  auto value = [&](const char* name) { return n.count(name) ? nlohmann::json(n.at(name)) : nlohmann::json(nullptr); };
+  // slip_over_h: contact faces only; strain_max: films (no bonded face); glue_strain_max: glued layers (a load level).
+  return {{"slip_over_h", value("film_slip_over_h")}, {"strain_max", value("film_strain_max")},
+          {"glue_strain_max", value("glue_strain_max")}};
 }
 
 void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps) {

@@ -8,14 +8,17 @@
 #include <nlohmann/json.hpp>
 
 #include "cases/scene/scene_file_scenes.h"
+#include "studies/drivers/classification_cost.h"
 
 namespace thinlayer {
 
 // mode: "limit" or "layer"; eps: the asked thickness (0: each glue's own).
 void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, double eps, const SceneFileScene& scene);
 
+// `cost`: what the paper's rule would cost (limit mode; nullptr: not asked), as "classification_cost".
 std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene_file, const std::string& mode,
-                             const SceneFileScene& scene, const std::string& out, const std::string& vtu);
+                             const SceneFileScene& scene, const std::string& out, const std::string& vtu,
+                             const ClassificationCost* cost = nullptr);
 
 // The thickness a `solve --scene` asks for (0: none given), checked against the scene: the layer
 // mode needs one (--eps, or an engineer's glue's own) the joint can hold; in limit mode --eps

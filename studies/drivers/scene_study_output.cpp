@@ -65,8 +65,8 @@ void print_scene_study(const SceneFileBulk& bulk, const SceneStudyResult& r, con
     std::printf("  %s (faces %s/%s): %s", b.label().c_str(), to_string(b.faces.plus), to_string(b.faces.minus),
                 law.describe().c_str());
     if (b.glue)
-      std::printf(", an engineer's glue E %g, nu %g, t %g mm: its law at each eps by SPEC 1.3 (L = %g mm)", b.glue->E,
-                  b.glue->nu, b.glue->thickness, bulk.characteristic_length());
+      std::printf(", an engineer's glue E %g, nu %g, t %g mm: its own springs K_N = (lambda_g+2mu_g)/eps, K_T = mu_g/eps "
+                  "at each eps (SPEC 1.3)", b.glue->E, b.glue->nu, b.glue->thickness);
     else
       std::printf(" (lambda_bar %g, mu_bar %g %s, f %g)", law.lambda_bar, law.mu_bar, spec.units.stiffness().c_str(),
                   law.friction);
@@ -85,6 +85,8 @@ void print_scene_study(const SceneFileBulk& bulk, const SceneStudyResult& r, con
                 s.converged ? "" : "  NOT converged");
   }
   print_fit_rows(scene_distance_quantities(), r.fit, r.floor_fit, 8, 10);
+  std::printf("  (the verdict's quantities below: the reactions, u, and the peaks at d = %g mm from the bondline ends)\n",
+              r.peak_distance);
   std::printf("  %-8s", "p Cauchy");
   for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", rate_text(r.cauchy_fit.at(q)).c_str());
   std::printf("   (the layer model's differences between neighbouring eps: the mesh floor cancels)\n");
@@ -122,17 +124,63 @@ void print_scene_floor(const SceneStudyResult& r) {
   std::printf("\n");
 }
 
+std::string verdict_label(const std::string& q, double d) {
+  if (q == "reactions") return "reactions";
+  if (q == "u") return "adherents' displacements";
+  if (q == "peel_at_d") return "peak peel at " + plain(d) + " mm from the ends";
+  if (q == "shear_at_d") return "peak shear at " + plain(d) + " mm from the ends";
+  return q;
+}
+
+void print_scene_ends(const SceneStudyResult& r) {
+  std::printf("\nThe verdict's quantities at each eps (relative distance of the layer model to the limit law), and the\n"
+              "peaks at d = %g mm from each bondline end (%s; the worse face of the layer), both modes\n",
+              r.peak_distance, r.peak_distance_reason.c_str());
+  std::printf("  %-8s", "eps");
+  for (const std::string& q : verdict_quantities()) std::printf(" %10s", q.c_str());
+  std::printf(" | %9s %9s | %9s %9s\n", "peel lay", "peel lim", "shear lay", "shear lim");
+  for (const SceneSample& s : r.samples) {
+    std::printf("  %-8g", s.eps);
+    for (const std::string& q : verdict_quantities()) std::printf(" %10s", sci(s.verdict.at(q), 2).c_str());
+    std::printf(" | %9.4g %9.4g | %9.4g %9.4g\n", s.layer_ends.peel, s.limit_ends.peel, s.layer_ends.shear,
+                s.limit_ends.shear);
+  }
+  if (r.floor.empty()) return;
+  std::printf("\nThe bondline ends under mesh refinement (eps %g mm): the corner of the layer model is singular (its\n"
+              "value grows as h shrinks: it is shown, not judged); at d = %g mm both modes converge and are compared\n",
+              r.floor.front().eps, r.peak_distance);
+  std::printf("  %-8s | %-21s %-21s | %-21s %-21s\n", "h (mm)", "corner peel lay/lim", "peel at d lay/lim",
+              "corner shear lay/lim", "shear at d lay/lim");
+  for (const SceneFloorRow& row : r.floor)
+    std::printf("  %-8g | %9.4g %9.4g   %9.4g %9.4g   | %9.4g %9.4g   %9.4g %9.4g%s\n", row.h, row.layer_ends.peel_end,
+                row.limit_ends.peel_end, row.layer_ends.peel, row.limit_ends.peel, row.layer_ends.shear_end,
+                row.limit_ends.shear_end, row.layer_ends.shear, row.limit_ends.shear, row.converged ? "" : "  NOT converged");
+}
+
 void print_scene_validity(const SceneStudyResult& r, int steps) {
-  std::printf("\nThickness validity (S3): the largest eps (mm) at which the limit law stays within tau of the layer\n"
-              "model (distance of the adherents' displacements, 'u'), %d bisection steps on log eps between samples\n\n",
+  std::printf("\nThickness validity (S3), one verdict per quantity: the largest eps (mm) at which the limit law stays\n"
+              "within tau of the layer model (%d bisection steps on log eps between samples; 'found': by bisection,\n"
+              ">=: within at every sample, <: at none)\n\n",
               steps);
-  std::printf("%-5s | %-11s %-10s %-11s %-11s\n", "tau", "eps_max", "error", "first eps>", "status");
-  for (const SceneValidityRow& v : r.validity)
-    std::printf("%-5g | %-11s %-10s %-11s %-11s%s\n", v.tau, verdict_text(v).c_str(), sci(v.error_at_eps_max, 2).c_str(),
-                v.status == "found" ? sci(v.eps_beyond, 2).c_str() : "-", v.status.c_str(),
-                v.converged ? "" : "  (a scene did not converge)");
+  for (const std::string& q : verdict_quantities()) {
+    std::string line;
+    bool converged = true;
+    for (const SceneValidityRow& v : r.validity) {
+      if (v.quantity != q) continue;
+      line += (line.empty() ? "" : "; ") + std::string("within ") + plain(100 * v.tau) + " % up to eps " + verdict_text(v) +
+              " (" + sci(v.error_at_eps_max, 1) + ")";
+      converged = converged && v.converged;
+    }
+    std::printf("  %-40s %s%s\n", (verdict_label(q, r.peak_distance) + ":").c_str(), line.c_str(),
+                converged ? "" : "  (a scene did not converge)");
+    if (!r.floor.empty())  // the same distance on the finer meshes: where it moves, the verdict measures the mesh too
+      std::printf("  %-40s at eps %g mm: %s at h %g mm, %s at h %g mm\n", "", r.floor.front().eps,
+                  sci(r.floor.front().verdict.at(q), 2).c_str(), r.floor.front().h, sci(r.floor.back().verdict.at(q), 2).c_str(),
+                  r.floor.back().h);
+  }
+  std::printf("  %-40s singular in the layer model: not judged (above, under refinement)\n", "the corners themselves:");
   if (!r.floor.empty() && r.family == "engineer")
-    std::printf("On the mesh: the distance u at the glue's own thickness %g mm is %s at h %g mm and %s at h %g mm:\n"
+    std::printf("\nOn the mesh: the distance u at the glue's own thickness %g mm is %s at h %g mm and %s at h %g mm:\n"
                 "a verdict changes with the mesh where tau is within that change\n",
                 r.floor.front().eps, sci(r.floor.front().e.at("u"), 2).c_str(), r.floor.front().h,
                 sci(r.floor.back().e.at("u"), 2).c_str(), r.floor.back().h);
@@ -220,6 +268,40 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
     out.attr(g, "fitted_floor_" + q, ff ? 1 : 0);
   }
 
+  // The verdict's quantities (issue 35): distances per sample and the peaks at d of both modes.
+  out.attr(g, "peak_distance", r.peak_distance);
+  out.attr(g, "peak_distance_units", std::string("mm"));
+  out.attr(g, "peak_distance_description", "d: the peaks are judged at d from each bondline end (the corner itself is "
+                                            "singular in the layer model); " + r.peak_distance_reason);
+  {
+    std::string order;
+    for (const std::string& q : verdict_quantities()) order += (order.empty() ? "" : ",") + q;
+    out.attr(g, "verdict_quantities", order);
+  }
+  for (const std::string& q : verdict_quantities()) {
+    std::vector<double> v;
+    for (const SceneSample& smp : r.samples) v.push_back(smp.verdict.at(q));
+    put(out, g + "/verdict_" + q, v, "1 (relative)",
+        "relative distance of the layer model to the limit law: " + verdict_label(q, r.peak_distance));
+  }
+  auto ends_column = [&](auto member, bool layer) {
+    std::vector<double> v;
+    for (const SceneSample& smp : r.samples) v.push_back((layer ? smp.layer_ends : smp.limit_ends).*member);
+    return v;
+  };
+  for (const bool layer : {true, false}) {
+    const std::string mode = layer ? "layer" : "limit";
+    put(out, g + "/ends/" + mode + "_peel_at_d", ends_column(&EndStresses::peel, layer), stress,
+        "the largest sigma_N at d from either bondline end (worse face), " + mode + " mode");
+    put(out, g + "/ends/" + mode + "_shear_at_d", ends_column(&EndStresses::shear, layer), stress,
+        "the largest |sigma_T| at d from either bondline end (worse face), " + mode + " mode");
+    put(out, g + "/ends/" + mode + "_peel_corner", ends_column(&EndStresses::peel_end, layer), stress,
+        "the largest sigma_N at the bondline ends' nodes (singular in the layer model), " + mode + " mode");
+    put(out, g + "/ends/" + mode + "_shear_corner", ends_column(&EndStresses::shear_end, layer), stress,
+        "the largest |sigma_T| at the bondline ends' nodes (singular in the layer model), " + mode + " mode");
+  }
+  out.attr(g + "/ends", "description", "per sample (eps): the peaks at d from the bondline ends and at the corners, both modes");
+
   const std::string c = g + "/cauchy";
   put(out, c + "/eps", std::vector<double>(eps.begin(), eps.end() - 1), "mm",
       "the thicker eps of each pair of neighbouring samples");
@@ -264,6 +346,28 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
       put(out, f + "/floor_" + q, column(r.floor, q), "1 (relative)", "the mesh floor: distance of " + quantity_descriptions().at(q));
       write_fits(out, f, q, r.floor_rate.at(q), "rate_");
     }
+    for (const bool layer : {true, false}) {
+      const std::string mode = layer ? "layer" : "limit";
+      std::vector<double> peel, shear, peel_corner, shear_corner;
+      for (const SceneFloorRow& row : r.floor) {
+        const EndStresses& e = layer ? row.layer_ends : row.limit_ends;
+        peel.push_back(e.peel);
+        shear.push_back(e.shear);
+        peel_corner.push_back(e.peel_end);
+        shear_corner.push_back(e.shear_end);
+      }
+      put(out, f + "/" + mode + "_peel_at_d", peel, stress, "the largest sigma_N at d from either end at h, " + mode + " mode");
+      put(out, f + "/" + mode + "_shear_at_d", shear, stress, "the largest |sigma_T| at d from either end at h, " + mode + " mode");
+      put(out, f + "/" + mode + "_peel_corner", peel_corner, stress,
+          "the largest sigma_N at the ends' nodes at h (the layer's grows: singular), " + mode + " mode");
+      put(out, f + "/" + mode + "_shear_corner", shear_corner, stress,
+          "the largest |sigma_T| at the ends' nodes at h (the layer's grows: singular), " + mode + " mode");
+    }
+    for (const std::string& q : verdict_quantities()) {
+      std::vector<double> v;
+      for (const SceneFloorRow& row : r.floor) v.push_back(row.verdict.at(q));
+      put(out, f + "/verdict_" + q, v, "1 (relative)", "at h: " + verdict_label(q, r.peak_distance));
+    }
     out.attr(f, "floor_eps_factor", o.floor_eps_factor);
     out.attr(f, "description", "the modes' distance far below the eps grid, at h, h/2, h/4: a mesh effect, not a modelling one");
   }
@@ -299,9 +403,10 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
   if (!r.validity.empty()) {
     const std::string v = g + "/validity";
     std::vector<double> tau, eps_max, error, beyond;
-    std::vector<std::string> status;
+    std::vector<std::string> status, quantity;
     std::vector<int> steps, vconv;
     for (const SceneValidityRow& row : r.validity) {
+      quantity.push_back(row.quantity);
       tau.push_back(row.tau);
       status.push_back(row.status);
       eps_max.push_back(row.eps_max);
@@ -310,11 +415,13 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
       steps.push_back(row.bisection_steps);
       vconv.push_back(row.converged ? 1 : 0);
     }
-    put(out, v + "/tau", tau, "1 (relative)", "the tolerance on the distance u");
+    put(out, v + "/quantity", quantity, "", "the quantity judged: reactions, u (the adherents' displacements), "
+                                               "peel_at_d, shear_at_d (the peaks at peak_distance from the ends)");
+    put(out, v + "/tau", tau, "1 (relative)", "the tolerance on the quantity's distance");
     put(out, v + "/status", status, "", "found: by bisection; at_least: within tau at every sample (a lower bound); "
                                           "below_range: not within tau even at the thinnest sample");
-    put(out, v + "/eps_max", eps_max, "mm", "the largest eps at which the limit law stays within tau (u)");
-    put(out, v + "/error_at_eps_max", error, "1 (relative)", "the distance u at eps_max");
+    put(out, v + "/eps_max", eps_max, "mm", "the largest eps at which the limit law stays within tau (the quantity)");
+    put(out, v + "/error_at_eps_max", error, "1 (relative)", "the quantity's distance at eps_max");
     put(out, v + "/eps_beyond", beyond, "mm", "the smallest eps known beyond tau (status found)");
     put(out, v + "/bisection_steps", steps, "", "bisection steps on log eps");
     put(out, v + "/converged", vconv, "", "1: every scene behind the verdict reached the tolerance");

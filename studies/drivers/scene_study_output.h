@@ -18,7 +18,13 @@ struct FloorScenes {
 
 void print_scene_study(const SceneFileBulk& bulk, const SceneStudyResult& r, const SceneStudyOptions& options);
 void print_scene_floor(const SceneStudyResult& r);
+// The bondline ends: the peaks at d and at the corners under mesh refinement (the floor's meshes),
+// both modes: the corner of the layer model is singular (it grows as h shrinks), d's value converges.
+void print_scene_ends(const SceneStudyResult& r);
+// The verdict, one line per quantity (reactions, u, peak peel and peak shear at d).
 void print_scene_validity(const SceneStudyResult& r, int steps);
+// A verdict quantity as words: "reactions", "adherents' displacements", "peak peel at 0.5 mm from the ends", ...
+std::string verdict_label(const std::string& quantity, double d);
 
 // /studies/scene/<name>/ (eps, e_*, cauchy/, floor/, peaks/, validity/), the scenes (the floor's
 // with "-h<h>" after their id), and <results folder>/bondline_fields.csv.

@@ -16,7 +16,10 @@ namespace thinlayer {
 struct BondlineField {
   std::string bondline;   // its group
   std::vector<double> s, x, y;            // mm (x, y: the limit mode's position)
-  std::vector<double> sigma_N, sigma_T;   // stress unit
+  std::vector<double> sigma_N, sigma_T;   // stress unit, on the plus adherent's face
+  // On the minus adherent's face (layer mode: S-, the layer's other face; limit mode or a law only:
+  // the same as the plus face's). A layer's two faces differ near its ends: the worse one breaks.
+  std::vector<double> sigma_N_minus, sigma_T_minus;
   std::vector<double> jump_N, jump_T;     // mm
   std::vector<int> status;                // 0 gap, 1 slide, 2 stick
   std::vector<double> length;             // tributary length, mm
@@ -33,6 +36,18 @@ struct BondlinePeaks {
   double compression = 0;         // max (−σ_N)⁺
 };
 BondlinePeaks bondline_peaks(const BondlineField& field);
+
+// The stresses at distance d (mm, arc length) from each end of a bondline, on the worse of its two
+// faces: the largest σ_N (peel; may be negative, a compression) and the largest |σ_T| of the two
+// ends, linearly interpolated between nodes. At the end itself (d = 0) a layer's corner is
+// singular: its value grows as the mesh is refined; at a fixed distance it converges (issue 35).
+struct EndStresses {
+  double d = 0;          // mm
+  double peel = 0;       // stress unit, max over the ends and faces of σ_N(d)
+  double shear = 0;      // stress unit, max over the ends and faces of |σ_T(d)|
+  double peel_end = 0, shear_end = 0;  // the same at the ends' nodes themselves (the corners)
+};
+EndStresses end_stresses(const BondlineField& field, double d);
 
 // The adherents' nodal displacements of a record, in the order of the scene's bodies (both
 // modes have the same adherent nodes first), 2 per node (mm).

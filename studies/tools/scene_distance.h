@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "cases/scene/scene_file_scenes.h"
+#include "studies/tools/bondline_fields.h"
 
 namespace thinlayer {
 
@@ -29,5 +30,24 @@ const std::vector<std::string>& scene_distance_quantities();
 // `status_diff`, if given, receives the number of S nodes whose (combined) status differs.
 std::map<std::string, double> scene_distance(const SceneFileBulk& bulk, const SceneRecord& layer,
                                              const SceneRecord& limit, int* status_diff = nullptr);
+
+// ‖R_a − R_b‖ / ‖R_b‖ over every support group together (the reactions as one vector), or the
+// absolute ‖R_a − R_b‖ where R_b vanishes.
+double reaction_distance(const SceneRecord& a, const SceneRecord& b);
+
+// The verdict's quantities (SPEC §3 S3, issue 35), what breaks joints: the reactions, the
+// adherents' displacements, and the peak peel and peak shear at a stated distance d (mm) from each
+// bondline end — the corner itself is singular in the layer model. In output order:
+// "reactions", "u", "peel_at_d", "shear_at_d".
+const std::vector<std::string>& verdict_quantities();
+
+// The peaks at d of every bondline of a record: the largest peel and the largest |shear| over the
+// bondlines (studies/tools/bondline_fields.h, end_stresses).
+EndStresses peaks_at_distance(const SceneFileBulk& bulk, const SceneRecord& record, double d);
+
+// Each verdict quantity's relative distance of `layer` to `limit`: the reactions and u as above;
+// a peak as |P_layer − P_limit| / max(|P_limit|, 1e-6 × the limit's largest |σ| on S).
+std::map<std::string, double> verdict_distance(const SceneFileBulk& bulk, const SceneRecord& layer,
+                                               const SceneRecord& limit, double d);
 
 }  // namespace thinlayer
