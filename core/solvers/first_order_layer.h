@@ -6,16 +6,21 @@
 //
 // Between its faces u⁻ (minus adherent) and u⁺ (plus adherent) a thin layer's displacement is, to
 // first order, linear through its thickness. With j = u⁺ − u⁻, m = (u⁺ + u⁻)/2, (s, n) the bondline's
-// tangent and normal (minus → plus), its energy per unit length of bondline is exactly
-//   W = (1/2t)[(λ+2μ) j_n² + μ j_s²]                         the spring law at t (K_N, K_T)
-//     + λ j_n ∂_s m_s + μ j_s ∂_s m_n                           the in-plane coupling (Poisson, rotation)
-//     + (t/2)[(λ+2μ)(∂_s m_s)² + μ (∂_s m_n)²]                  the layer's own membrane
-//     + (t/24)[(λ+2μ)(∂_s j_s)² + μ (∂_s j_n)²]                 O(t³): left out
-// (plane strain; plane stress with λ* = 2λμ/(λ+2μ)). The limit law keeps the first line, with the
-// limit's K_N, K_T. What the estimate adds is everything else the layer has at order t:
-//   - the coupling and membrane lines, segment by segment along each bondline (∂_s m constant on a
-//     segment, j at its mean), where the limit answer holds both faces (a node's status: normal
-//     terms where it is not open, tangential and membrane terms where it sticks or is bonded);
+// tangent and normal (minus → plus), its energy per unit length of bondline is then, exactly,
+//   W = (K_N/2)(j_n + t ν* ∂_s m_s)² + (K_T/2)(j_s + t ∂_s m_n)² + (t/2) E* (∂_s m_s)²  (+ O(t³))
+// with K_N = (λ+2μ)/t, K_T = μ/t, ν* = λ/(λ+2μ), E* = 4μ(λ+μ)/(λ+2μ) (plane strain; plane stress
+// with λ* = 2λμ/(λ+2μ)): the spring law acting on the jump less the layer's own Poisson thinning
+// and rotation, and the membrane of the layer with its normal stress free. The limit law keeps
+// (K/2) j². Expanding the squares, the rest is the coupling λ j_n ∂_s m_s + μ j_s ∂_s m_n (O(1) on
+// the jumps, whose stiffness is O(1/t)) and terms O(t); at the first-order answer the square's
+// bracket is −σ/K, so the force the squares put on m is −t ∂_sᵀ σ ≈ what the coupling gives at u₀:
+// the load is the coupling's gradient at u₀ and the membrane E*, nothing of the squares' t² K part
+// (it cancels against the coupling's response — a naive expansion counting (t/2)(λ+2μ)(∂_s m_s)²
+// stiffens the membrane by λ²t/(λ+2μ): the bilayer in in-plane tension, tests). Applied:
+//   - segment by segment along each bondline (∂_s m constant on a segment, j at its mean), where the
+//     limit answer holds both faces (a node's status: the normal coupling where it is not open, the
+//     tangential one and the membrane where it sticks or is bonded);
+//   - at each free end of a bondline, the end cell's deficits (core/solvers/layer_end_cell.h);
 //   - the spring's own misfit where the law's stiffness is not the layer's (the paper's family off
 //     γ, δ = 1; a law classified to 0 or ∞): a finite misfit ΔK as a force −ΔK ℓ j, a rigid law
 //     (K = ∞, no jump) as the compliance 1/(K_layer ℓ) it leaves out, a law carrying no force
@@ -41,6 +46,10 @@ struct LayerAtThickness {
   // The end deficits (core/solvers/layer_end_cell.h): near a free end of the layer its traction falls
   // short of the spring's by the force α_N t σ_N (normal) and α_T t σ_T (shear).
   double end_deficit_N = 0, end_deficit_T = 0;
+  // The bondline's end nodes are the layer's free ends (a scene file's always are: its supports never
+  // touch a bondline). False: the layer goes on into a support there (the closed-form tests' bilayers,
+  // held on their sides): no end deficit, and the support takes the segments' force at the end node.
+  bool free_ends = true;
   // λ seen in the plane: λ in plane strain, 2λμ/(λ+2μ) in plane stress (σ33 = 0).
   double plane_lambda() const;
   double K_N() const { return (lambda + 2 * mu) / thickness; }  // the spring of a bonded layer at t
