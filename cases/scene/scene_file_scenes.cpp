@@ -117,6 +117,41 @@ SceneFileBulk::SceneFileBulk(SceneSpec spec) : spec_(std::move(spec)) {
   system_ = std::make_unique<LinearSystem>(model_);
 }
 
+namespace {
+
+// What a bulk's meshes and model depend on: everything but the bondlines' glue, law and faces.
+bool same_joint(const SceneSpec& a, const SceneSpec& b) {
+  if (a.geometry != b.geometry || a.mesh != b.mesh || a.h_interface != b.h_interface || a.h_far != b.h_far ||
+      a.element != b.element || a.plane != b.plane || a.characteristic_length != b.characteristic_length ||
+      a.bodies.size() != b.bodies.size() || a.interfaces.size() != b.interfaces.size() ||
+      a.supports.size() != b.supports.size() || a.loads.size() != b.loads.size() || a.layer_elements != b.layer_elements)
+    return false;
+  for (std::size_t i = 0; i < a.bodies.size(); ++i)
+    if (a.bodies[i].group != b.bodies[i].group || a.bodies[i].lambda != b.bodies[i].lambda || a.bodies[i].mu != b.bodies[i].mu)
+      return false;
+  for (std::size_t i = 0; i < a.interfaces.size(); ++i)
+    if (a.interfaces[i].group != b.interfaces[i].group || a.interfaces[i].plus != b.interfaces[i].plus ||
+        a.interfaces[i].minus != b.interfaces[i].minus)
+      return false;
+  for (std::size_t i = 0; i < a.supports.size(); ++i)
+    if (a.supports[i].group != b.supports[i].group || a.supports[i].u != b.supports[i].u) return false;
+  for (std::size_t i = 0; i < a.loads.size(); ++i)
+    if (a.loads[i].group != b.loads[i].group || a.loads[i].kind != b.loads[i].kind || a.loads[i].vector != b.loads[i].vector ||
+        a.loads[i].pressure != b.loads[i].pressure)
+      return false;
+  return true;
+}
+
+}  // namespace
+
+SceneFileBulk::SceneFileBulk(const SceneFileBulk& meshed, SceneSpec spec)
+    : spec_(std::move(spec)), meshes_(meshed.meshes_), S_(meshed.S_), thickest_(meshed.thickest_), L_(meshed.L_) {
+  if (!same_joint(meshed.spec_, spec_))
+    throw std::invalid_argument("SceneFileBulk: another joint than the meshed one (only the bondlines' glue, law and faces may differ)");
+  model_ = make_scene_limit_model(spec_, meshes_);
+  system_ = std::make_unique<LinearSystem>(model_);
+}
+
 bool SceneFileBulk::has_engineer_glue() const {
   for (const SceneInterfaceSpec& i : spec_.interfaces)
     if (i.glue) return true;
@@ -225,7 +260,8 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
   record_answer_admissibility(r);
   if (extras.first_order)
-    scene.first_order = scene_first_order(bulk, problem, scene.report, r.id, mixed.get(), eps, status_tolerance);
+    scene.first_order =
+        scene_first_order(bulk, problem, scene.report, r.id, mixed.get(), eps, status_tolerance, extras.first_order_interior);
   return scene;
 }
 

@@ -28,6 +28,11 @@ class SceneFileBulk {
   // Reads nothing: `spec` is already checked; meshes the geometry and checks the meshes
   // (InputError at the scene file's line and column).
   explicit SceneFileBulk(SceneSpec spec);
+  // The same joint and meshes as `meshed`, another glue or law on its bondlines: `spec` differs from
+  // meshed.spec() in its interfaces' "glue", "layer", "law" and "faces" at most (checked: the same
+  // geometry or mesh, mesh size, bodies, bondline groups, supports and loads), so nothing is meshed
+  // again. The validity map's cells (studies/drivers/validity_map.h): one joint, many glues.
+  SceneFileBulk(const SceneFileBulk& meshed, SceneSpec spec);
   const SceneSpec& spec() const { return spec_; }
   const SceneMeshes& meshes() const { return meshes_; }
   const std::vector<SceneInterfaceNodes>& interface_nodes() const { return S_; }
@@ -100,8 +105,10 @@ struct LimitSolveExtras {
   // One law per bondline, solved instead of bulk.limit_law(i, eps) (empty: those): a study that
   // states the law it compares (the validity map, SPEC §3 S3) gives it here.
   std::vector<InterfaceLaw> laws;
-  // Also the first-order answer of the layers of thickness eps behind the laws (SPEC §3 S6).
+  // Also the first-order answer of the layers of thickness eps behind the laws (SPEC §3 S6), and
+  // (first_order_interior) the same without the end cells (SceneFirstOrder::interior).
   bool first_order = false;
+  bool first_order_interior = false;
 };
 
 // `classified`: solve with the laws the paper's 3 % / 30x rule would choose (classified_law) instead of

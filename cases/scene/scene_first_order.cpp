@@ -43,9 +43,35 @@ Eigen::VectorXd gather_free(const LinearSystem& system, const Eigen::VectorXd& f
 
 }  // namespace
 
+namespace {
+
+// The first-order answer of `layers` as a limit record: one more substitution on `factored`.
+std::optional<SceneRecord> answer(const SceneFileBulk& bulk, const ContactProblem& problem, const SolveReport& limit,
+                                  const std::vector<Active>& statuses, const std::vector<LayerAtThickness>& layers,
+                                  const MixedSystem& factored, const std::string& id, double status_tolerance) {
+  const LinearSystem& system = problem.system();
+  const FirstOrderLoad load = first_order_layer_load(problem, layers, system.expand(limit.u), limit.r, statuses);
+  const MixedSystem::Answer delta = factored.solve_again(gather_free(system, load.body_forces), load.row_values);
+  if (delta.singular || !delta.u.allFinite() || !delta.r.allFinite()) return std::nullopt;
+  SolveReport first = limit;
+  first.u = limit.u + delta.u;
+  first.r = limit.r + delta.r;
+  // The layer's traction on the plus face: the spring's force and the first-order force on the
+  // plus side, in the rows' convention (force on the plus side = −n r_N + t r_T).
+  for (int k = 0; k < problem.num_nodes(); ++k) {
+    const InterfaceNode& n = problem.node(k);
+    first.r[2 * k] += -n.normal.dot(load.plus_force[k]);
+    first.r[2 * k + 1] += n.tangent().dot(load.plus_force[k]);
+  }
+  first.message = "the first-order layer answer about the limit answer (one extra solve on its statuses)";
+  return record_scene(id, bulk.model(), problem, first, status_tolerance);
+}
+
+}  // namespace
+
 SceneFirstOrder scene_first_order(const SceneFileBulk& bulk, const ContactProblem& problem, const SolveReport& limit,
                                   const std::string& limit_id, MixedSystem* factored, double eps,
-                                  double status_tolerance) {
+                                  double status_tolerance, bool interior_too) {
   const auto start = std::chrono::steady_clock::now();
   SceneFirstOrder out;
   std::vector<LayerAtThickness> layers;
@@ -68,26 +94,17 @@ SceneFirstOrder scene_first_order(const SceneFileBulk& bulk, const ContactProble
     factored = own.get();
     out.extra_factorisation = true;
   }
-  const LinearSystem& system = problem.system();
-  const FirstOrderLoad load = first_order_layer_load(problem, layers, system.expand(limit.u), limit.r, statuses);
-  const MixedSystem::Answer delta = factored->solve_again(gather_free(system, load.body_forces), load.row_values);
-  if (delta.singular || !delta.u.allFinite() || !delta.r.allFinite()) {
+  out.record = answer(bulk, problem, limit, statuses, layers, *factored, limit_id + "-first-order", status_tolerance);
+  if (!out.record) {
     out.note = "not computed: the limit mode's system at its statuses is singular";
     return out;
   }
-  SolveReport first = limit;
-  first.u = limit.u + delta.u;
-  first.r = limit.r + delta.r;
-  // The layer's traction on the plus face: the spring's force and the first-order force on the
-  // plus side, in the rows' convention (force on the plus side = −n r_N + t r_T).
-  for (int k = 0; k < problem.num_nodes(); ++k) {
-    const InterfaceNode& n = problem.node(k);
-    first.r[2 * k] += -n.normal.dot(load.plus_force[k]);
-    first.r[2 * k + 1] += n.tangent().dot(load.plus_force[k]);
-  }
-  first.message = "the first-order layer answer about " + limit_id + " (one extra solve on its statuses)";
-  out.record = record_scene(limit_id + "-first-order", bulk.model(), problem, first, status_tolerance);
   out.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (interior_too) {
+    for (LayerAtThickness& l : layers) l.end_deficit_N = l.end_deficit_T = 0;
+    out.interior = answer(bulk, problem, limit, statuses, layers, *factored, limit_id + "-first-order-interior",
+                          status_tolerance);
+  }
   return out;
 }
 

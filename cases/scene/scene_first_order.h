@@ -20,6 +20,10 @@ class SceneFileBulk;
 
 struct SceneFirstOrder {
   std::optional<SceneRecord> record;  // as a limit record: u₁ = u₀ + δu, the plus face's traction
+  // When asked: the same without the end cells' deficits (its id ends in "-interior"): what a layer
+  // meshed with elements longer than its end zone (a few t) can show — the validity map judges the
+  // estimate against such layers with it (studies/limit_error_estimate.md, "The ends").
+  std::optional<SceneRecord> interior;
   std::vector<double> thickness;      // per bondline: the layer's t (mm; 0: a law only)
   std::string note;                   // why there is no record, or ""
   double time_s = 0;                  // the load and the one extra solve
@@ -32,6 +36,6 @@ struct SceneFirstOrder {
 // or the limit answer did not converge.
 SceneFirstOrder scene_first_order(const SceneFileBulk& bulk, const ContactProblem& problem, const SolveReport& limit,
                                   const std::string& limit_id, MixedSystem* factored, double eps,
-                                  double status_tolerance);
+                                  double status_tolerance, bool interior_too = false);
 
 }  // namespace thinlayer
