@@ -48,7 +48,7 @@ def joint_block(ctx, s, name):
            f"{num(attr(s, 'peak_distance'))} mm from each bondline end ({esc(attr(s, 'peak_distance_reason', ''))}); "
            f"h = {num(attr(s, 'h'))} mm, h/2 = {num(attr(s, 'h_fine'))} mm; {len(t)} cells, "
            f"{int(np.sum(converged))} converged; wall time {num(attr(s, 'wall_time_s'))} s on "
-           f"{int(attr(s, 'ranks', 1))} rank(s) × {int(attr(s, 'threads', 1))} thread(s).</p>"]
+           f"{int(attr(s, 'wall_time_ranks', 1))} rank(s) × {int(attr(s, 'wall_time_threads', 1))} thread(s).</p>"]
     for q in MAPPED:
         out.append(map_figure(ctx, s, name, q))
     out.append(rule_table(s))
@@ -88,8 +88,10 @@ def map_figure(ctx, s, name, q):
         Z = np.where(g["converged"] > 0, Z, np.nan)
         if len(ts) > 1 and len(Es) > 1 and np.isfinite(Z).sum() >= 4:
             cs = ax.contourf(X, Y, Z, levels=levels, cmap="viridis", extend="both")
-            lines = ax.contour(X, Y, Z, levels=[np.log10(0.01), np.log10(0.05)], colors="white", linewidths=1.5, linestyles="solid")
-            ax.clabel(lines, fmt={np.log10(0.01): "1 %", np.log10(0.05): "5 %"}, fontsize=8)
+            reached = [v for v in (np.log10(0.01), np.log10(0.05)) if np.nanmin(Z) < v < np.nanmax(Z)]
+            if reached:
+                lines = ax.contour(X, Y, Z, levels=reached, colors="white", linewidths=1.5, linestyles="solid")
+                ax.clabel(lines, fmt={np.log10(0.01): "1 %", np.log10(0.05): "5 %"}, fontsize=8)
             fig.colorbar(cs, ax=ax, label="log10 distance")
         else:
             sc = ax.scatter(X, Y, c=Z, cmap="viridis", vmin=lo, vmax=hi, s=120)
