@@ -74,7 +74,7 @@ def grid(s, nu_value, q):
 
 def map_figure(ctx, s, name, q):
     nus = np.unique(array(s, "nu"))
-    fig, axes = plt.subplots(1, len(nus), figsize=(4.8 * len(nus), 4.3), squeeze=False)
+    fig, axes = plt.subplots(1, len(nus), figsize=(max(4.8 * len(nus), 7.0), 4.3), squeeze=False)
     # The colour levels span this quantity's values (half decades), so that a map whose distances stay
     # far below 1 % is not one colour; the 1 % and 5 % lines are drawn where the values reach them.
     values = np.log10(np.clip(array(s, f"measured_{q}")[array(s, "converged") > 0], 1e-7, None))
