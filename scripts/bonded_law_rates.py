@@ -31,6 +31,18 @@ TEMPLATES = {"dovetail": os.path.join(ROOT, "cases", "bonded_laws", "dovetail_d_
              "ring": os.path.join(ROOT, "cases", "bonded_laws", "ring_c_bonded_contact.json")}
 EXPONENTS = {"a": (1.5, 1.5), "b": (1.5, 1), "c": (1, 1.5), "d": (1, 1), "e": (0.5, 1.5), "f": (0.5, 1),
              "g": (1.5, 0.5), "h": (1, 0.5), "i": (0.5, 0.5)}
+# Case (c) with one face bonded is pre-asymptotic down to 1e-8 on the dovetail: its slot corner,
+# where the right flank's contact zone ends, adds a term whose local slopes fall to 0.25 at 1e-6
+# and rise back to 0.49 at 1e-10 (studies/convergence_rates.md, "The bonded laws' three misses").
+# SPEC 3 S2 item 1: "further where a case is still pre-asymptotic": its grid is 1e-4 ... 1e-10
+# (the scene's own, 1e-3 ... 1e-6, everywhere else). The ring (no corner) needs none.
+EXTENDED_GRID = [10 ** (-k / 2) for k in range(8, 21)]
+
+
+def extended(case, faces, geometry):
+    return geometry == "dovetail" and case == "c" and faces in ("bc", "cb")
+
+
 FACES = {"bb": ("bonded", "bonded"), "bc": ("bonded", "contact"), "cb": ("contact", "bonded"),
          "cc": ("contact", "contact")}
 QUANTITIES = ("u", "jump_N", "jump_T", "sigma_N", "sigma_T")
@@ -46,6 +58,8 @@ def scene(case, faces, geometry):
     s["interface"]["faces"] = {"plus": plus, "minus": minus}
     s["interface"]["layer"]["gamma"] = gamma
     s["interface"]["layer"]["delta"] = delta
+    if extended(case, faces, geometry):
+        s["eps"] = EXTENDED_GRID
     return s
 
 
