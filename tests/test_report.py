@@ -369,6 +369,7 @@ def write_results(path, layout=True, failing=False, complete=True, version=2):
             write_convergence_study(f, case, limit_id, layer_ids, eps, p_fit=1.0 if case == "d" else 0.5,
                                     passed=True)
         write_cauchy_rates(f, "b", 0.5, passed=True)
+        write_validity_map(f)
         write_cauchy_rates(f, "d", 0.0, passed=False, measurable=False)
         write_floor(f)
         write_controls(f)
