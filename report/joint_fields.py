@@ -28,6 +28,12 @@ class Bondline:
     jump_N: np.ndarray  # mm
     jump_T: np.ndarray
     status: np.ndarray
+    # On the minus adherent's face: the layer's other face (S-) in layer mode, the same as the plus
+    # face's in limit mode. A layer's two faces differ near its ends; the worse one breaks.
+    sigma_N_minus: np.ndarray = None
+    sigma_T_minus: np.ndarray = None
+    x: np.ndarray = None       # positions along the bondline (the minus side's), mm
+    normal: np.ndarray = None  # unit normals, minus into plus
 
 
 def bondline_groups(scene):
@@ -49,7 +55,8 @@ def bondline_fields(scene):
             S = g["S"]
             x, status = array(S, "x"), array(S, "status")
             fields = Bondline(name, arc_length(x), array(S, "sigma_N"), array(S, "sigma_T"), array(S, "jump_N"),
-                              array(S, "jump_T"), status)
+                              array(S, "jump_T"), status, array(S, "sigma_N"), array(S, "sigma_T"), x,
+                              array(S, "normal"))
         else:
             plus, minus = g["S+"], g["S-"]
             n = array(minus, "normal")
@@ -64,7 +71,8 @@ def bondline_fields(scene):
             else:
                 status = array(plus, "status")
             fields = Bondline(name, arc_length(array(minus, "x")), array(plus, "sigma_N"), array(plus, "sigma_T"),
-                              np.sum(n * d, axis=1), -np.sum(t * d, axis=1), status)
+                              np.sum(n * d, axis=1), -np.sum(t * d, axis=1), status, array(minus, "sigma_N"),
+                              array(minus, "sigma_T"), array(minus, "x"), n)
         offset += len(fields.s)
         out.append(fields)
     return out

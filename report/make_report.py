@@ -84,10 +84,10 @@ IN_HELPER = {"convergence"}
 
 # A file whose only study is a scene-file study (`study validity --scene`) gets the report of that
 # joint instead of the verification report's empty sections (SPEC §5).
+# Its sections are numbered 1, 2, 3 ... in order: the run summary, then the joint's own
+# (section_joint.sections: the joint and its law, the verdict, ..., what the answers assume).
 JOINT_SECTIONS = (
     ("summary", "Summary", section_header.render),
-    ("joint", "The joint", section_joint.render),
-    ("film", "Film", section_film.render),
 )
 
 
@@ -140,9 +140,14 @@ def write_report(f, results_path, out_dir):
         raise SectionError(f"section '{error[0]}': {error[1]}")
     from_helper = dict(zip([anchor for anchor, _, _ in sections if anchor in IN_HELPER], helper_parts))
     parts = [mine[anchor] if anchor in mine else from_helper[anchor] for anchor, _, _ in sections]
+    nav = [(a, label) for a, label, _ in sections]
+    if joint:
+        for anchor, label, html in build("the joint's sections", lambda: section_joint.sections(ctx, len(sections) + 1)):
+            parts.append(html)
+            nav.append((anchor, label))
     title = (f"{JOINT_TITLE}: {', '.join(sorted(f['studies']['scene']))}" if joint else
              f"{MAP_TITLE}: {', '.join(sorted(f['studies']['validity_map']))}" if mapped else TITLE)
-    html = page(title, [(a, label) for a, label, _ in sections], "\n".join(parts))
+    html = page(title, nav, "\n".join(parts))
     with open(os.path.join(out_dir, "index.html"), "w", encoding="utf-8") as out:
         out.write(html)
 

@@ -97,13 +97,16 @@ def scene_figure(ctx, s, name, eps):
 def validity_table(v):
     tau, eps_max, status = array(v, "tau"), array(v, "eps_max"), strings(v["status"])
     error, beyond, steps = array(v, "error_at_eps_max"), array(v, "eps_beyond"), array(v, "bisection_steps")
+    quantity = strings(v["quantity"]) if "quantity" in v else ["u"] * len(tau)  # before issue 35: u only
     rows = []
     for i in range(len(tau)):
         value = {"found": f"{eps_max[i]:.3g}", "at_least": f"≥ {eps_max[i]:.3g}",
                  "below_range": f"&lt; {eps_max[i]:.3g}"}.get(status[i], f"{eps_max[i]:.3g}")
-        rows.append([f"{tau[i] * 100:g} %", f"<b>{value}</b>", f"{error[i]:.2e}",
+        rows.append([esc(quantity[i]), f"{tau[i] * 100:g} %", f"<b>{value}</b>", f"{error[i]:.2e}",
                      f"{beyond[i]:.3g}" if status[i] == "found" else "—", STATUS_TEXT.get(status[i], esc(status[i])),
                      str(int(steps[i]))])
-    return ("<p>Thickness validity (S3): the largest ε (mm) at which the adherents' displacements of the limit law "
-            "stay within τ of the layer model.</p>" +
-            table(["τ", "ε_max (mm)", "error at ε_max", "first ε beyond", "status", "bisection steps"], rows))
+    return ("<p>Thickness validity (S3), per quantity (the reactions, the adherents' displacements u, the peak peel and "
+            "shear at a stated distance from the bondline ends): the largest ε (mm) up to which the limit law stays "
+            "within τ of the layer model at every sampled thickness.</p>" +
+            table(["quantity", "τ", "ε_max (mm)", "error at ε_max", "first ε beyond", "status", "bisection steps"], rows,
+                  left_columns=(0,)))

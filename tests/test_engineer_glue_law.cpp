@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cases/scene/scene_file_scenes.h"
+#include "studies/drivers/scene_solve_output.h"
 #include "core/interface/glue.h"
 #include "tests/scene_folder.h"
 #include "tests/text_file.h"
@@ -94,4 +95,17 @@ TEST(EngineerGlueLaw, ThreeMillimetreLineBetweenAluminiumSheetsCarriesTheLoad) {
   const AdherentData ref = bulk.reference(0);
   ASSERT_LT(lame_from_young(3000, 0.35).mu / 3, 0.03 * ref.mu_m / ref.L) << "the scene no longer exercises the cut-off";
   expect_limit_carries_what_the_layer_carries(bulk);
+}
+
+// The rule's law itself, solved (what `solve --mode limit` does beside the glue's own to say what the
+// rule would cost): μ̄ = 0 carries next to nothing, every node "stick" — and the scene says so.
+TEST(EngineerGlueLaw, TheRulesLawCarriesNothingAndSaysSo) {
+  SceneFileBulk bulk(read_scene_spec(cases_dir + "single_lap.json"));
+  const SceneFileScene rule = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{}, 0, default_status_tolerance,
+                                                     /*classified=*/true);
+  ASSERT_TRUE(rule.report.converged) << rule.report.message;
+  EXPECT_EQ(rule.bondlines.at(0).law.mu_bar, 0.0);
+  EXPECT_LT(std::abs(grip_force(rule)), 1e-6 * 210000 * 0.01);  // nothing against E |u| of the grip
+  EXPECT_FALSE(rule.carries_load);
+  EXPECT_NE(no_load_warning(rule).find("carries next to nothing"), std::string::npos) << no_load_warning(rule);
 }

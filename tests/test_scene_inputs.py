@@ -15,6 +15,7 @@ run is left (thinlayer runs in its own session; the session is empty after it).
 
 import json
 import os
+import re
 import shutil
 import signal
 import stat
@@ -337,9 +338,33 @@ def done_when(folder):
     with open(os.path.join(folder, "dl", "report", "index.html"), encoding="utf-8") as f:
         page = f.read()
     check("double lap: the joint's report", "<title>thinlayer joint report: double-lap</title>" in page and
-          "shear stresses" in page and "peel" in page and "not in this results file" not in page, page[:300])
-    for name in ("joint_double-lap_bondline_bond_top.png", "joint_double-lap_peaks.png", "joint_double-lap_shape.png"):
+          "shear" in page and "peel" in page and "not in this results file" not in page, page[:300])
+    for name in ("joint_double-lap_bondline_bond_top.png", "joint_double-lap_peaks.png", "joint_double-lap_shape.png",
+                 "joint_double-lap_glue_bond_top.png", "joint_double-lap_jumps_bond_top.png"):
         check("double lap: figure " + name, os.path.exists(os.path.join(folder, "dl", "report", "figures", name)), name)
+    # Issue 35, the report an engineer reads: sections numbered 1, 2, 3 ... in order; the verdict one
+    # line per quantity; the law's own values at the glue's own 0.2 mm (lambda_g/t = 12963, mu_g/t =
+    # 5556 MPa/mm, by hand: E 3000, nu 0.35); both faces of the layer; the closed forms; scene ids with
+    # rounded thicknesses; no overflowed distance.
+    numbers = [int(m) for m in re.findall(r"<h2>(\d+)\. ", page)]
+    check("double lap: sections numbered 1, 2, 3 ... in order", numbers == list(range(1, len(numbers) + 1)) and
+          len(numbers) >= 8, str(numbers))
+    for line in ("<b>reactions</b>", "<b>adherents&#x27; displacements</b>", "<b>peak peel at d = 0.5 mm from the ends</b>",
+                 "<b>peak shear at d = 0.5 mm from the ends</b>", "<b>the corners themselves</b>"):
+        check("double lap: a verdict line for " + line, page.count(line) == 1, line)
+    own = re.search(r"<td class=\"l\">0\.2 <b>\(the glue's own\)</b></td><td class=\"l\">bond_top</td><td>d</td>"
+                    r"<td>([0-9.e+]+)</td><td>([0-9.e+]+)</td>", page)
+    check("double lap: the law's own values at 0.2 mm", own is not None and abs(float(own.group(1)) - 12963) < 1 and
+          abs(float(own.group(2)) - 5555.6) < 1, own.group(0) if own else "no row for 0.2 mm")
+    check("double lap: both faces of the layer drawn", "minus face" in page and "plus face" in page, "")
+    with h5py.File(results) as h:
+        g = h["studies"]["scene"]["double-lap"]
+        check("double lap: closed forms", g["closed_forms"].attrs["joint"] == "double lap" and
+              "volkersen_shear" in g["closed_forms"]["bond_top"], str(dict(g["closed_forms"].attrs)))
+        long_ids = [sid for sid in h["scenes"] if re.search(r"eps\d*\.\d{5,}", sid)]
+        check("double lap: scene ids with rounded thicknesses", not long_ids, str(long_ids[:3]))
+        values = [x for name in g if name.startswith(("e_", "verdict_")) for x in g[name][()]]
+        check("double lap: no overflowed distance", all(0 <= x < 1e3 for x in values), str(max(values)))
     # The joint's report is the report's own: a second run replaces it.
     report_py = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "report", "make_report.py")
     r = subprocess.run([sys.executable, report_py, results, os.path.join(folder, "dl", "report")], capture_output=True,

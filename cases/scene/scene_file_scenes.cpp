@@ -84,6 +84,28 @@ LayerFaceRoles layer_face_roles(const SceneSpec& spec, const SceneLayerModel& la
   return roles;
 }
 
+// How much the bondlines carry, against how much the scene calls for (force unit per mm): Σ |σ| ℓ
+// on each bondline's plus face; the largest load resultant, and E_b |u| of each nonzero imposed
+// displacement on a body b (the force that strains a unit square of it by u).
+void measure_carried(const SceneFileBulk& bulk, const Model& model, SceneFileScene& scene) {
+  const SceneRecord& r = scene.record;
+  scene.bondline_force = 0;
+  for (std::size_t i = 0; i < bulk.spec().interfaces.size(); ++i) {
+    const InterfaceFields& f = r.interfaces.at(plus_face_of(bulk, r, static_cast<int>(i)));
+    for (Eigen::Index k = 0; k < f.sigma_N.size(); ++k)
+      scene.bondline_force += std::hypot(f.sigma_N[k], f.sigma_T[k]) * f.length[k];
+  }
+  scene.force_scale = 0;
+  for (const auto& [_, F] : scene.loads) scene.force_scale = std::max(scene.force_scale, F.norm());
+  for (const DirichletCondition& d : model.dirichlet) {
+    const Material& m = model.bodies[d.body].material;
+    const double E = m.mu * (3 * m.lambda + 2 * m.mu) / (m.lambda + m.mu);
+    scene.force_scale = std::max(scene.force_scale, E * std::abs(d.value));
+  }
+}
+
+bool carries(const SceneFileScene& s) { return s.bondline_force > 1e-6 * s.force_scale; }
+
 bool all_open(const std::vector<SceneBondline>& bondlines) {
   for (const SceneBondline& b : bondlines)
     for (int s : b.status)
@@ -256,7 +278,8 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
   if (law_thickness > 0) r.numbers["law_thickness"] = law_thickness;
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   scene.loads = applied_load_resultants(bulk.model());
-  scene.carries_load = !all_open(scene.bondlines);
+  measure_carried(bulk, bulk.model(), scene);
+  scene.carries_load = !all_open(scene.bondlines) && carries(scene);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
   record_answer_admissibility(r);
   if (extras.first_order)
@@ -319,7 +342,8 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   add_attributes(r, bulk, scene.bondlines, "layer", eps > 0 ? eps : id_thickness(spec, eps), meshing);
   r.numbers["setup_time_s"] = condensed ? condensed->setup_time_s() : 0.0;
   scene.loads = applied_load_resultants(layer.model);
-  scene.carries_load = !all_open(scene.bondlines);
+  measure_carried(bulk, layer.model, scene);
+  scene.carries_load = !all_open(scene.bondlines) && carries(scene);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
   record_film_admissibility(r, layer_face_roles(spec, layer));
   record_answer_admissibility(r);
@@ -374,6 +398,8 @@ void write_scene_file_scene(H5Writer& file, const SceneFileScene& scene, const S
     file.attr(p, "face_plus", std::string(to_string(b.faces.plus)));
     file.attr(p, "face_minus", std::string(to_string(b.faces.minus)));
     file.attr(p, "friction", b.friction);
+    file.attr(p, "make_room", b.make_room ? "[" + std::to_string((*b.make_room)[0]) + ", " + std::to_string((*b.make_room)[1]) + "]"
+                                          : std::string("the bondline's normal (from minus into plus)"));
     file.attr(p, "law", law_kind(state.law));
     file.attr(p, "law_case", std::string(1, state.law.table1_case()));
     file.attr(p, "lambda_bar", state.law.lambda_bar);

@@ -96,7 +96,12 @@ struct SceneFileScene {
   MeshQuality layer_quality;  // layer mode: the first layer's
   std::vector<SceneBondline> bondlines;
   std::map<std::string, Eigen::Vector2d> loads;  // each load group's resultant force (force unit per mm)
-  bool carries_load = true;   // false: every bondline node is open (SPEC §5)
+  // false: every bondline node is open (SPEC §5), or the bondlines carry next to nothing — under
+  // 1e-6 of the force the scene's loads and imposed displacements call for (a law with no stiffness
+  // along the load: the steel single lap under a μ̄ = 0 law carried 6.9e-12 N/mm, all "stick").
+  bool carries_load = true;
+  double bondline_force = 0;  // Σ |σ| ℓ over every bondline's plus face, force unit per mm
+  double force_scale = 0;     // the loads' resultants and E × |u| of each imposed displacement, force per mm
   SceneFirstOrder first_order;  // limit mode, when asked: the layer's first-order answer (SPEC §3 S6)
 };
 

@@ -201,8 +201,31 @@ double bondline_length(const Interface& S) {
   return length;
 }
 
+// The smallest cosine allowed between a make_room direction and a bondline's normal: beyond 78°
+// from the normal the layer's columns would lie nearly along the bondline (its cells' angles under 12°).
+constexpr double kRoomCosine = 0.2;
+
+// How far and where a plus body's bondline node moves per unit of layer thickness: along the normal
+// n (by 1), or along the scene's make_room direction d by 1 / (d·n), so that the layer is ε thick
+// across the bondline (its columns then run along d).
+Eigen::Vector2d room_step(const SceneInterfaceSpec& i, const InterfaceNode& node) {
+  if (!i.make_room) return node.normal;
+  const Eigen::Vector2d d((*i.make_room)[0], (*i.make_room)[1]);
+  const double c = d.dot(node.normal);
+  if (c < kRoomCosine) {
+    std::ostringstream s;
+    s << i.make_room_where << ": 'make_room' [" << d.x() << ", " << d.y() << "] is "
+      << std::acos(std::clamp(c, -1.0, 1.0)) * 180 / 3.141592653589793 << " deg from " << i.label()
+      << "'s normal at " << point_text(node.x)
+      << " (at most 78 deg, pointing from the minus body into the plus body: the layer's cells would be too flat)";
+    throw InputError(s.str());
+  }
+  return d / c;
+}
+
 // The offsets that make room for layers of the given thicknesses (per bondline, 0: none): each
-// plus body's bondline nodes by t n, its nodes on any other bondline held. A node given two
+// plus body's bondline nodes by t n (or along the bondline's make_room direction, room_step), its
+// nodes on any other bondline held. A node given two
 // different offsets (two bondlines meeting on it) is refused.
 std::vector<NodeOffsets> layer_offsets(const SceneSpec& spec, const std::vector<Interface>& limit,
                                        const std::vector<double>& thickness, const std::vector<Mesh>& meshes) {
@@ -223,7 +246,8 @@ std::vector<NodeOffsets> layer_offsets(const SceneSpec& spec, const std::vector<
   for (std::size_t i = 0; i < n; ++i) {
     const std::string& group = spec.interfaces[i].group;
     for (const InterfaceNode& node : limit[i].nodes) {
-      if (moving.count(node.plus_body)) impose(node.plus_body, node.plus_node, thickness[i] * node.normal, group);
+      if (moving.count(node.plus_body))
+        impose(node.plus_body, node.plus_node, thickness[i] * room_step(spec.interfaces[i], node), group);
       if (moving.count(node.minus_body)) impose(node.minus_body, node.minus_node, Eigen::Vector2d::Zero(), group);
     }
   }

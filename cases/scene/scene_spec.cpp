@@ -168,7 +168,7 @@ FaceHold read_face(const ObjectReader& faces, const std::string& key) {
 
 SceneInterfaceSpec read_interface(const SceneSpec& s, const PositionedJson& doc, const std::string& pointer,
                                   const std::string& what, const std::string& where) {
-  const ObjectReader i(doc, pointer, what, {"group", "plus", "minus", "friction", "faces", "layer", "glue", "law"});
+  const ObjectReader i(doc, pointer, what, {"group", "plus", "minus", "friction", "faces", "layer", "glue", "law", "make_room"});
   SceneInterfaceSpec f;
   f.where = where;
   f.group = i.text("group");
@@ -182,6 +182,18 @@ SceneInterfaceSpec read_interface(const SceneSpec& s, const PositionedJson& doc,
     const ObjectReader faces(doc, i.child("faces"), "faces", {"plus", "minus"});
     f.faces.plus = read_face(faces, "plus");
     f.faces.minus = read_face(faces, "minus");
+  }
+  if (i.has("make_room")) {  // the direction the plus body moves in to make room for the layer
+    const json& v = i.object().at("make_room");
+    if (!v.is_array() || v.size() != 2)
+      i.fail("make_room", "'make_room' must be a direction [dx, dy] (the plus body moves along it to make room for the layer)");
+    const std::string p = i.child("make_room");
+    const double dx = i.number_value(v[0], p + "/0", "'make_room' x", -1e6, 1e6);
+    const double dy = i.number_value(v[1], p + "/1", "'make_room' y", -1e6, 1e6);
+    const double norm = std::hypot(dx, dy);
+    if (!(norm > 0)) i.fail("make_room", "'make_room' must be a nonzero direction [dx, dy]");
+    f.make_room = std::array<double, 2>{dx / norm, dy / norm};
+    f.make_room_where = i.where("make_room");
   }
   // Both faces bonded: no contact anywhere, so no friction (a "friction" given is not used).
   if (i.has("friction") || !f.faces.both_bonded()) f.friction = i.number("friction", 0, 1e6);
@@ -231,7 +243,7 @@ void read_interfaces(const ObjectReader& root, SceneSpec& s) {
     SceneInterfaceSpec f = read_interface(s, root.doc(), p, "interface " + std::to_string(k),
                                           root.doc().source + ":" + std::to_string(at.line) + ":" + std::to_string(at.column));
     // Its group names its results (interface/<group>/S): one path component of a plain name.
-    const ObjectReader i(root.doc(), p, "interface", {"group", "plus", "minus", "friction", "faces", "layer", "glue", "law"});
+    const ObjectReader i(root.doc(), p, "interface", {"group", "plus", "minus", "friction", "faces", "layer", "glue", "law", "make_room"});
     if (!plain_name(f.group))
       i.fail("group", "a bondline's group names its results (interface/<group>/S): letters, digits, '-', '_' and '.' only");
     for (const SceneInterfaceSpec& other : s.interfaces)

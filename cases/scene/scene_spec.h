@@ -52,7 +52,11 @@ struct SceneInterfaceSpec {
   std::optional<SceneLayerSpec> layer;  // the paper's family: both modes
   std::optional<SceneGlueSpec> glue;    // or an engineer's glue: both modes
   std::optional<double> lambda_bar, mu_bar;  // or "law": a limit law only (may be inf)
-  std::string where, group_where;
+  // "make_room": the direction in which the plus body moves to make room for the layer in layer
+  // mode (a unit vector; given as any nonzero [dx, dy]). Absent: the bondline's nodal normal (from
+  // minus into plus). A scarf joint's load axis keeps its pulled strip in line (README).
+  std::optional<std::array<double, 2>> make_room;
+  std::string where, group_where, make_room_where;
 
   bool has_layer_mode() const { return layer.has_value() || glue.has_value(); }
   // The glue of layer mode (the paper's family or an engineer's); throws if the bondline gives a law only.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <iostream>
 #include <mutex>
@@ -33,6 +34,15 @@ std::optional<std::pair<double, double>> scene_exponents(const SceneSpec& spec) 
     out = e;
   }
   return out;
+}
+
+// A thickness to `digits` significant digits: the grid's t × 0.1 is 0.020000000000000004 in
+// binary, and a bisection's log midpoint 0.031622776601683798; a scene's id and the report read
+// them as 0.02 and 0.0316 (the thickness solved is the rounded one, so id and scene agree).
+double round_significant(double x, int digits) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*g", digits, x);
+  return std::strtod(text, nullptr);
 }
 
 std::optional<double> predicted_rate(const SceneSpec& spec) {
@@ -161,14 +171,16 @@ void run_validity(SceneFileBulk& bulk, const SceneFileScene* shared_limit, const
     }
   for (int step = 0; step < options.bisection_steps; ++step) {
     std::vector<double> round;  // each thickness once: brackets of several quantities may share a midpoint
+    // Each midpoint to 3 significant digits (its scene id reads as the thickness solved).
+    auto midpoint = [](const Bracket& b) { return round_significant(log_midpoint(b), 3); };
     for (const Job& j : jobs)
-      if (j.bisect && std::find(round.begin(), round.end(), log_midpoint(j.bracket)) == round.end())
-        round.push_back(log_midpoint(j.bracket));
+      if (j.bisect && std::find(round.begin(), round.end(), midpoint(j.bracket)) == round.end())
+        round.push_back(midpoint(j.bracket));
     if (round.empty()) break;
     Solved solved = solve_pairs(bulk, round, options, shared_limit);
     for (Job& j : jobs) {
       if (!j.bisect) continue;
-      const double mid = log_midpoint(j.bracket);
+      const double mid = midpoint(j.bracket);
       const std::size_t k = static_cast<std::size_t>(std::find(round.begin(), round.end(), mid) - round.begin());
       const SceneFileScene& limit = shared_limit ? *shared_limit : solved.limits[k];
       const SceneFileScene& s = solved.layers[k];
@@ -324,7 +336,7 @@ std::vector<double> scene_study_grid(const SceneFileBulk& bulk, const SceneStudy
     for (const SceneInterfaceSpec& i : spec.interfaces)
       if (i.glue) t = std::max(t, i.glue->thickness);
     for (double factor : {5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01})
-      if (factor * t <= bulk.thickest_layer()) eps.push_back(factor * t);
+      if (factor * t <= bulk.thickest_layer()) eps.push_back(round_significant(factor * t, 12));
   }
   if (eps.empty()) eps = options.eps;
   std::sort(eps.rbegin(), eps.rend());
@@ -377,6 +389,14 @@ SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& o
   for (const std::string& q : scene_distance_quantities()) {
     r.cauchy_fit[q] = fit_cauchy_differences(eps, r.cauchy.at(q));
     r.cauchy_tail[q] = fit_cauchy_tail(eps, r.cauchy.at(q));
+  }
+
+  // The classical closed forms at the glue's own thickness (an engineer's glue: the sample nearest it).
+  if (r.family == "engineer") {
+    const double t = floor_thickness(bulk, eps, options);
+    for (std::size_t i = 0; i < eps.size(); ++i)
+      if (std::abs(std::log(eps[i] / t)) < std::abs(std::log(eps[r.nominal] / t))) r.nominal = i;
+    r.closed_forms = joint_closed_forms(bulk, limit_of(r.nominal).record);
   }
 
   print_scene_study(bulk, r, options);

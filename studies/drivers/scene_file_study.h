@@ -22,6 +22,7 @@
 
 #include "cases/scene/scene_file_scenes.h"
 #include "core/io/h5_writer.h"
+#include "studies/drivers/joint_closed_forms.h"
 #include "studies/drivers/table3_study.h"
 #include "studies/tools/bondline_fields.h"
 #include "studies/tools/cauchy_fit.h"
@@ -109,6 +110,8 @@ struct SceneStudyResult {
   std::map<std::string, std::optional<PowerLawFit>> floor_rate;     // the floor's rate in h
   std::vector<ScenePeak> peaks;
   std::optional<double> p_predicted;  // the Table 2 case with the scene's (γ, δ), if any
+  JointClosedForms closed_forms;      // Volkersen, Goland-Reissner at the glue's own thickness (a lap, a double lap)
+  std::size_t nominal = 0;            // the sample of the glue's own thickness (an engineer's glue), else 0
   double peak_distance = 0;           // mm, d of the peaks judged at a distance from the ends
   std::string peak_distance_reason;   // how d was chosen
   std::vector<SceneValidityRow> validity;

@@ -130,6 +130,7 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
                     {"bulk", report.residual.bulk}, {"tolerance", report.tolerance}}},
       {"counts", counts},
       {"carries_load", s.carries_load},
+      {"carried", {{"bondline_force", s.bondline_force}, {"force_scale", s.force_scale}}},
       {"reactions", reactions},
       {"loads", loads},
       {"force_units", bulk.spec().units.force + "/mm"},
@@ -163,10 +164,13 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
 nlohmann::json film_json(const SceneRecord& record) {
   const auto& n = record.numbers;
   if (!n.count("film_slip_over_h") && !n.count("film_strain_max") && !n.count("glue_strain_max")) return nullptr;
-  auto value = [&](const char* name) { return n.count(name) ? nlohmann::json(n.at(name)) : nlohmann::json(nullptr); };
-  // slip_over_h: contact faces only; strain_max: films (no bonded face); glue_strain_max: glued layers (a load level).
-  return {{"slip_over_h", value("film_slip_over_h")}, {"strain_max", value("film_strain_max")},
-          {"glue_strain_max", value("glue_strain_max")}};
+  // Each where it applies: slip_over_h on contact faces, strain_max of films (no bonded face),
+  // glue_strain_max of glued layers (a load level).
+  nlohmann::json film = nlohmann::json::object();
+  for (const auto& [key, name] : {std::pair{"slip_over_h", "film_slip_over_h"}, std::pair{"strain_max", "film_strain_max"},
+                                  std::pair{"glue_strain_max", "glue_strain_max"}})
+    if (n.count(name)) film[key] = n.at(name);
+  return film;
 }
 
 void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps) {
@@ -227,8 +231,18 @@ void write_limit_error_estimate(H5Writer& file, const std::string& scene_id, con
 
 std::string no_load_warning(const SceneFileScene& s) {
   if (s.carries_load) return "";
-  return "warning: every bondline node is open (gap): the joint carries no load across its bondlines (a glued joint "
-         "needs \"faces\": {\"plus\": \"bonded\", \"minus\": \"bonded\"})";
+  bool open = true;
+  for (const SceneBondline& b : s.bondlines)
+    for (int status : b.status) open = open && status == static_cast<int>(NodeStatus::Gap);
+  if (open)
+    return "warning: every bondline node is open (gap): the joint carries no load across its bondlines (a glued joint "
+           "needs \"faces\": {\"plus\": \"bonded\", \"minus\": \"bonded\"})";
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "warning: the joint carries next to nothing across its bondlines: %.3g per mm in all, against %.3g per "
+                "mm that its loads and imposed displacements call for (a law without stiffness along the load?)",
+                s.bondline_force, s.force_scale);
+  return buf;
 }
 
 }  // namespace thinlayer

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/io/output_target.h"
+#include <algorithm>
 #include "studies/tools/format.h"
 #include "studies/tools/scene_distance.h"
 
@@ -144,6 +145,29 @@ void print_scene_ends(const SceneStudyResult& r) {
     for (const std::string& q : verdict_quantities()) std::printf(" %10s", sci(s.verdict.at(q), 2).c_str());
     std::printf(" | %9.4g %9.4g | %9.4g %9.4g\n", s.layer_ends.peel, s.limit_ends.peel, s.layer_ends.shear,
                 s.limit_ends.shear);
+  }
+  if (!r.closed_forms.joint.empty()) {
+    std::printf("\nThe classical closed forms (%s; %s), at eps %g mm, against the limit law's and the layer's peaks:\n",
+                r.closed_forms.joint.c_str(), r.closed_forms.assumptions.c_str(), r.samples.at(r.nominal).eps);
+    for (const ClosedFormCurves& c : r.closed_forms.bondlines) {
+      auto peak = [](const std::vector<double>& v) {
+        double m = 0;
+        for (double x : v) m = std::max(m, std::abs(x));
+        return m;
+      };
+      std::printf("  %s: P = %.4g, overlap %.4g mm; peak shear Volkersen %.4g", c.bondline.empty() ? "S" : c.bondline.c_str(), c.P,
+                  c.length, peak(c.volkersen_shear));
+      if (!c.gr_shear.empty())
+        std::printf(", Goland-Reissner %.4g (k %.3g), peak peel Goland-Reissner %.4g", peak(c.gr_shear), c.k,
+                    *std::max_element(c.gr_peel.begin(), c.gr_peel.end()));
+      std::printf("\n");
+    }
+    std::printf("  computed at eps %g mm (the corners): shear limit %.4g, layer %.4g; peel limit %.4g, layer %.4g\n",
+                r.samples.at(r.nominal).eps, r.samples.at(r.nominal).limit_ends.shear_end,
+                r.samples.at(r.nominal).layer_ends.shear_end, r.samples.at(r.nominal).limit_ends.peel_end,
+                r.samples.at(r.nominal).layer_ends.peel_end);
+  } else if (!r.closed_forms.why_not.empty()) {
+    std::printf("\nNo classical closed form drawn: %s\n", r.closed_forms.why_not.c_str());
   }
   if (r.floor.empty()) return;
   std::printf("\nThe bondline ends under mesh refinement (eps %g mm): the corner of the layer model is singular (its\n"
@@ -301,6 +325,10 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
         "the largest |sigma_T| at the bondline ends' nodes (singular in the layer model), " + mode + " mode");
   }
   out.attr(g + "/ends", "description", "per sample (eps): the peaks at d from the bondline ends and at the corners, both modes");
+
+  if (!r.closed_forms.joint.empty() || !r.closed_forms.why_not.empty())
+    write_joint_closed_forms(out, g + "/closed_forms", r.closed_forms, stress, spec.units.force);
+  out.attr(g, "nominal_sample", static_cast<int>(r.nominal));
 
   const std::string c = g + "/cauchy";
   put(out, c + "/eps", std::vector<double>(eps.begin(), eps.end() - 1), "mm",
