@@ -48,6 +48,7 @@ import section_tables12  # noqa: E402
 import section_stress  # noqa: E402
 import section_timing  # noqa: E402
 import section_validity  # noqa: E402
+import section_validity_map  # noqa: E402
 from checks import load_checks  # noqa: E402
 from context import Context  # noqa: E402
 from html_parts import page, section  # noqa: E402
@@ -74,6 +75,7 @@ SECTIONS = (
     ("rates", "Rates", section_convergence_rates.render),
     ("controls", "Controls", section_controls.render),
     ("validity", "Validity", section_validity.render),
+    ("validity_map", "Validity map", section_validity_map.render),
     ("timing", "Run time", section_timing.render),
     ("stress", "Stress tests", section_stress.render),
     ("film", "Film", section_film.render),
@@ -98,6 +100,18 @@ def is_joint_file(f):
     return studies is not None and set(studies.keys()) == {"scene"}
 
 
+# A file whose only study is a validity map (`study validity-map --scene`) gets the map's report.
+MAP_SECTIONS = (
+    ("summary", "Summary", section_header.render),
+    ("validity_map", "Validity map", lambda ctx: section_validity_map.render(ctx, number="1")),
+)
+
+
+def is_map_file(f):
+    studies = f.get("studies")
+    return studies is not None and set(studies.keys()) == {"validity_map"}
+
+
 class SectionError(Exception):
     """A section could not be built from the file (a malformed or incomplete group)."""
 
@@ -116,7 +130,8 @@ def write_report(f, results_path, out_dir):
                 lambda: Context(path=results_path, f=f, scenes=index_scenes(f), checks=load_checks(f),
                                 figures=FigureWriter(out_dir)))
     joint = is_joint_file(f)
-    sections = JOINT_SECTIONS if joint else SECTIONS
+    mapped = is_map_file(f)
+    sections = JOINT_SECTIONS if joint else MAP_SECTIONS if mapped else SECTIONS
     helper, answer = parallel_sections.start(
         results_path, out_dir, [(label, render) for anchor, label, render in sections if anchor in IN_HELPER])
     try:
@@ -134,7 +149,8 @@ def write_report(f, results_path, out_dir):
         for anchor, label, html in build("the joint's sections", lambda: section_joint.sections(ctx, len(sections) + 1)):
             parts.append(html)
             nav.append((anchor, label))
-    title = f"{JOINT_TITLE}: {', '.join(sorted(f['studies']['scene']))}" if joint else TITLE
+    title = (f"{JOINT_TITLE}: {', '.join(sorted(f['studies']['scene']))}" if joint else
+             f"{MAP_TITLE}: {', '.join(sorted(f['studies']['validity_map']))}" if mapped else TITLE)
     html = page(title, nav, "\n".join(parts))
     with open(os.path.join(out_dir, "index.html"), "w", encoding="utf-8") as out:
         out.write(html)
@@ -142,6 +158,7 @@ def write_report(f, results_path, out_dir):
 
 TITLE = "thinlayer verification report"
 JOINT_TITLE = "thinlayer joint report"
+MAP_TITLE = "thinlayer validity map"
 
 
 def previous_figures(index_path):
@@ -156,7 +173,7 @@ def previous_figures(index_path):
     except (OSError, UnicodeDecodeError) as e:
         raise ReportError(f"{index_path}: exists and is not a report this script wrote ({e}); "
                           f"move it or choose another folder") from None
-    if f"<title>{TITLE}</title>" not in html and not re.search(f"<title>{JOINT_TITLE}: [^<]*</title>", html):
+    if f"<title>{TITLE}</title>" not in html and not re.search(f"<title>({JOINT_TITLE}|{MAP_TITLE}): [^<]*</title>", html):
         raise ReportError(f"{index_path}: exists and is not a report this script wrote; "
                           f"move it or choose another folder")
     return set(re.findall(r'<img src="figures/([^"/]+\.png)"', html))

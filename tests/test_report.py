@@ -305,6 +305,28 @@ def write_scene_study(f):
     v.create_dataset("status", data=strings(["found", "at_least"]), dtype=STR)
 
 
+def write_validity_map(f, name="a-joint"):
+    """A validity map of 2 x 2 cells at one nu (studies/drivers/validity_map_output.cpp's layout): one
+    cell the paper's rule gives another law, one that did not converge."""
+    g = f.create_group(f"studies/validity_map/{name}")
+    t, E = np.array([1e-2, 1e-1, 1e-2, 1e-1]), np.array([1e-3, 1e-3, 1e-1, 1e-1])
+    g["t_over_L"], g["E_ratio"], g["nu"] = t, E, np.full(4, 0.45)
+    g["converged"] = np.array([1, 1, 1, 0])
+    g["rule_solved"] = np.array([0, 1, 0, 0])
+    g["law_case"], g["rule_case"] = strings(["d", "d", "d", "d"]), strings(["d", "c", "d", "d"])
+    for q in ("reactions", "u", "peel_at_d", "shear_at_d", "sigma_N", "sigma_T"):
+        g[f"measured_{q}"] = 1e-3 * t / 1e-2
+        g[f"estimate_{q}"] = 1.2e-3 * t / 1e-2
+        g[f"interior_{q}"] = 1e-3 * t / 1e-2
+        g[f"resolved_{q}"] = np.array([1, 1, 0, 1])
+        g[f"ends_resolved_{q}"] = np.array([0, 1, 0, 1])
+        g[f"within_{q}"] = np.array([1, 1, 0, 0])
+        g[f"rule_{q}"] = np.array([-1.0, 1.0, -1.0, -1.0])
+    for k, v in dict(characteristic_length=1.4, E_a=70000.0, peak_distance=0.5, peak_distance_reason="two elements",
+                     h=0.25, h_fine=0.125, factor=2.0, wall_time_s=3.0, wall_time_ranks=1, wall_time_threads=1).items():
+        g.attrs[k] = v
+
+
 def write_checks(f, checks):
     g = f.create_group("checks")
     g.create_dataset("id", data=strings([c[0] for c in checks]), dtype=STR)
@@ -347,6 +369,7 @@ def write_results(path, layout=True, failing=False, complete=True, version=2):
             write_convergence_study(f, case, limit_id, layer_ids, eps, p_fit=1.0 if case == "d" else 0.5,
                                     passed=True)
         write_cauchy_rates(f, "b", 0.5, passed=True)
+        write_validity_map(f)
         write_cauchy_rates(f, "d", 0.0, passed=False, measurable=False)
         write_floor(f)
         write_controls(f)
@@ -550,6 +573,26 @@ class ReportTest(unittest.TestCase):
         with open(os.path.join(out, "index.html"), encoding="utf-8") as page_file:
             shown = set(re.findall(r'<img src="figures/([^"]+)"', page_file.read()))
         self.assertEqual(after - {"mine.txt"}, shown)
+        self.assertNothingLeftBehind()
+
+    def test_a_validity_map_file_gets_the_maps_report(self):
+        """A file whose only study is a validity map: its report, a figure per quantity and the estimate's."""
+        with h5py.File(self.path("map.h5"), "w") as f:
+            f.attrs["layout"] = "thinlayer-results"
+            f.attrs["layout_version"] = 2
+            write_validity_map(f)
+            write_checks(f, [])
+        out = self.path("map_report")
+        r = run_report(self.path("map.h5"), out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(out, "index.html"), encoding="utf-8") as page:
+            html = page.read()
+        self.assertIn("<title>thinlayer validity map: a-joint</title>", html)
+        for q in ("reactions", "u", "peel_at_d", "shear_at_d", "estimate"):
+            self.assertIn(f'figures/validity_map_a_joint_{q}.png', html)
+            self.assertTrue(os.path.isfile(os.path.join(out, "figures", f"validity_map_a_joint_{q}.png")), q)
+        self.assertIn("Where the paper's 3 % / 30x rule picks a 0 or ∞ law", html)  # the one cell it changes
+        self.assertIn("4 cells, 3 converged", html)  # the failed cell counted, not dropped
         self.assertNothingLeftBehind()
 
 

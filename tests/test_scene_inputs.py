@@ -479,8 +479,16 @@ def main():
                 folder)
         refused("layer mode without a thickness", ["solve", "--scene", "good.json", "--mode", "layer", *outs],
                 "layer mode needs --eps", folder)
-        refused("eps in limit mode of the paper's family", ["solve", "--scene", "good.json", "--eps", "0.01", *outs],
-                "--eps applies to the layer mode only", folder)
+        # --eps in limit mode of the paper's family: the law stays Table 1's, and it is the thickness of
+        # the layer SPEC 3 S6's estimate measures the law against (without it: no thickness, not computed).
+        r = subprocess.run([THINLAYER, "solve", "--scene", "good.json", "--eps", "0.01", "--json"], cwd=folder,
+                           capture_output=True, text=True)
+        plain_run = subprocess.run([THINLAYER, "solve", "--scene", "good.json", "--json"], cwd=folder, capture_output=True, text=True)
+        with_eps, without = json.loads(r.stdout), json.loads(plain_run.stdout)
+        check("eps in limit mode of the paper's family: the estimate's thickness, the same law",
+              r.returncode == 0 and with_eps["law_case"] == without["law_case"] and
+              with_eps["limit_error_estimate"]["eps"] == 0.01 and without["limit_error_estimate"]["computed"] is False,
+              r.stdout + r.stderr + plain_run.stdout)
 
         # The same joint pulled apart with its faces in contact (the paper's): nothing holds it
         # across the bondline, and the solve says so.

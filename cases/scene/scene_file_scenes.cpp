@@ -140,6 +140,41 @@ SceneFileBulk::SceneFileBulk(SceneSpec spec) : spec_(std::move(spec)) {
   system_ = std::make_unique<LinearSystem>(model_);
 }
 
+namespace {
+
+// What a bulk's meshes and model depend on: everything but the bondlines' glue, law and faces.
+bool same_joint(const SceneSpec& a, const SceneSpec& b) {
+  if (a.geometry != b.geometry || a.mesh != b.mesh || a.h_interface != b.h_interface || a.h_far != b.h_far ||
+      a.element != b.element || a.plane != b.plane || a.characteristic_length != b.characteristic_length ||
+      a.bodies.size() != b.bodies.size() || a.interfaces.size() != b.interfaces.size() ||
+      a.supports.size() != b.supports.size() || a.loads.size() != b.loads.size() || a.layer_elements != b.layer_elements)
+    return false;
+  for (std::size_t i = 0; i < a.bodies.size(); ++i)
+    if (a.bodies[i].group != b.bodies[i].group || a.bodies[i].lambda != b.bodies[i].lambda || a.bodies[i].mu != b.bodies[i].mu)
+      return false;
+  for (std::size_t i = 0; i < a.interfaces.size(); ++i)
+    if (a.interfaces[i].group != b.interfaces[i].group || a.interfaces[i].plus != b.interfaces[i].plus ||
+        a.interfaces[i].minus != b.interfaces[i].minus)
+      return false;
+  for (std::size_t i = 0; i < a.supports.size(); ++i)
+    if (a.supports[i].group != b.supports[i].group || a.supports[i].u != b.supports[i].u) return false;
+  for (std::size_t i = 0; i < a.loads.size(); ++i)
+    if (a.loads[i].group != b.loads[i].group || a.loads[i].kind != b.loads[i].kind || a.loads[i].vector != b.loads[i].vector ||
+        a.loads[i].pressure != b.loads[i].pressure)
+      return false;
+  return true;
+}
+
+}  // namespace
+
+SceneFileBulk::SceneFileBulk(const SceneFileBulk& meshed, SceneSpec spec)
+    : spec_(std::move(spec)), meshes_(meshed.meshes_), S_(meshed.S_), thickest_(meshed.thickest_), L_(meshed.L_) {
+  if (!same_joint(meshed.spec_, spec_))
+    throw std::invalid_argument("SceneFileBulk: another joint than the meshed one (only the bondlines' glue, law and faces may differ)");
+  model_ = make_scene_limit_model(spec_, meshes_);
+  system_ = std::make_unique<LinearSystem>(model_);
+}
+
 bool SceneFileBulk::has_engineer_glue() const {
   for (const SceneInterfaceSpec& i : spec_.interfaces)
     if (i.glue) return true;
@@ -212,18 +247,26 @@ int plus_face_of(const SceneFileBulk& bulk, const SceneRecord& record, int i) {
 }
 
 SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, const SolverOptions& options, double eps,
-                                      double status_tolerance, bool classified) {
+                                      double status_tolerance, bool classified, const LimitSolveExtras& extras) {
   const SceneSpec& spec = bulk.spec();
-  const ContactProblem problem(bulk.system(), bulk.limit_interfaces(eps, true, classified));
+  std::vector<Interface> interfaces = bulk.limit_interfaces(eps, true, classified);
+  if (!extras.laws.empty()) {
+    if (extras.laws.size() != interfaces.size())
+      throw std::invalid_argument("solve_scene_file_limit: one law per bondline (" + std::to_string(interfaces.size()) + ")");
+    for (std::size_t i = 0; i < interfaces.size(); ++i) interfaces[i].law = extras.laws[i];
+  }
+  const ContactProblem problem(bulk.system(), std::move(interfaces));
   // A scene bonded on every face is one sparse solve (core/solvers/bonded_solve.h), one with a body
   // held by its bondlines alone the sparse Newton (core/solvers/sparse_newton.h): nothing to condense
-  // unless that stops short.
+  // unless that stops short. The bonded solve's factorisation is kept for the first-order answer's one
+  // extra substitution.
+  const bool bonded = solver == SolverKind::Fast && every_interface_bonded(problem);
   const CondensedInterface* condensed =
-      solver == SolverKind::Fast && !every_interface_bonded(problem) && !takes_sparse_newton(problem)
-          ? &bulk.condensed()
-          : nullptr;
+      solver == SolverKind::Fast && !bonded && !takes_sparse_newton(problem) ? &bulk.condensed() : nullptr;
+  std::unique_ptr<MixedSystem> mixed;
+  if (bonded) mixed = std::make_unique<MixedSystem>(problem);
   SceneFileScene scene;
-  scene.report = run_solver(problem, condensed, solver, options);
+  scene.report = bonded ? solve_bonded(problem, options, mixed.get()) : run_solver(problem, condensed, solver, options);
   SceneRecord& r = scene.record;
   // An engineer's glue's law depends on its thickness (SPEC §1.3): then the id and the record say which.
   const double law_thickness = bulk.has_engineer_glue() ? id_thickness(spec, eps) : 0.0;
@@ -243,6 +286,9 @@ SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, co
   scene.carries_load = !all_open(scene.bondlines) && carries(scene);
   r.integers["carries_load"] = scene.carries_load ? 1 : 0;
   record_answer_admissibility(r);
+  if (extras.first_order)
+    scene.first_order =
+        scene_first_order(bulk, problem, scene.report, r.id, mixed.get(), eps, status_tolerance, extras.first_order_interior);
   return scene;
 }
 

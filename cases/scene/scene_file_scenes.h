@@ -13,6 +13,7 @@
 
 #include "cases/layer_scene.h"
 #include "cases/scene/load_path.h"
+#include "cases/scene/scene_first_order.h"
 #include "cases/scene/scene_model.h"
 #include "core/fem/linear_system.h"
 #include "core/interface/classifier.h"
@@ -27,6 +28,11 @@ class SceneFileBulk {
   // Reads nothing: `spec` is already checked; meshes the geometry and checks the meshes
   // (InputError at the scene file's line and column).
   explicit SceneFileBulk(SceneSpec spec);
+  // The same joint and meshes as `meshed`, another glue or law on its bondlines: `spec` differs from
+  // meshed.spec() in its interfaces' "glue", "layer", "law" and "faces" at most (checked: the same
+  // geometry or mesh, mesh size, bodies, bondline groups, supports and loads), so nothing is meshed
+  // again. The validity map's cells (studies/drivers/validity_map.h): one joint, many glues.
+  SceneFileBulk(const SceneFileBulk& meshed, SceneSpec spec);
   const SceneSpec& spec() const { return spec_; }
   const SceneMeshes& meshes() const { return meshes_; }
   const std::vector<SceneInterfaceNodes>& interface_nodes() const { return S_; }
@@ -96,13 +102,25 @@ struct SceneFileScene {
   bool carries_load = true;
   double bondline_force = 0;  // Σ |σ| ℓ over every bondline's plus face, force unit per mm
   double force_scale = 0;     // the loads' resultants and E × |u| of each imposed displacement, force per mm
+  SceneFirstOrder first_order;  // limit mode, when asked: the layer's first-order answer (SPEC §3 S6)
+};
+
+// What a limit solve may do beyond its bondlines' own laws.
+struct LimitSolveExtras {
+  // One law per bondline, solved instead of bulk.limit_law(i, eps) (empty: those): a study that
+  // states the law it compares (the validity map, SPEC §3 S3) gives it here.
+  std::vector<InterfaceLaw> laws;
+  // Also the first-order answer of the layers of thickness eps behind the laws (SPEC §3 S6), and
+  // (first_order_interior) the same without the end cells (SceneFirstOrder::interior).
+  bool first_order = false;
+  bool first_order_interior = false;
 };
 
 // `classified`: solve with the laws the paper's 3 % / 30x rule would choose (classified_law) instead of
 // the scene's own, to measure what that choice costs (SPEC §1.3); its id ends in "-classified".
 SceneFileScene solve_scene_file_limit(SceneFileBulk& bulk, SolverKind solver, const SolverOptions& options,
                                       double eps = 0, double status_tolerance = default_status_tolerance,
-                                      bool classified = false);
+                                      bool classified = false, const LimitSolveExtras& extras = {});
 // Throws std::invalid_argument for an ε the joint's geometry does not allow.
 SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, SolverKind solver,
                                       const SolverOptions& options, double status_tolerance = default_status_tolerance);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -39,7 +40,7 @@ StopCause stop_cause(const MixedSystem::Answer& answer, const SolveReport& repor
 
 }  // namespace
 
-SolveReport solve_bonded(const ContactProblem& problem, const SolverOptions& options) {
+SolveReport solve_bonded(const ContactProblem& problem, const SolverOptions& options, MixedSystem* factored) {
   if (!every_interface_bonded(problem))
     throw std::invalid_argument("solve_bonded: an interface of this problem is not bonded (its law is unilateral)");
   const auto start = std::chrono::steady_clock::now();
@@ -47,7 +48,11 @@ SolveReport solve_bonded(const ContactProblem& problem, const SolverOptions& opt
   report.solver = "fast";
   report.method = "bonded solve";
   report.tolerance = options.tolerance;
-  MixedSystem mixed(problem);
+  if (factored && &factored->problem() != &problem)
+    throw std::invalid_argument("solve_bonded: the MixedSystem given was built on another problem");
+  std::unique_ptr<MixedSystem> local;
+  if (!factored) local = std::make_unique<MixedSystem>(problem);
+  MixedSystem& mixed = factored ? *factored : *local;
   const MixedSystem::Answer answer = mixed.solve(bonded_statuses(problem));
   report.iterations = 1;
   report.u = answer.u;

@@ -10,6 +10,7 @@
 
 #include "core/solvers/active_set.h"
 #include "core/solvers/contact_problem.h"
+#include "core/solvers/mixed_system.h"
 #include "core/solvers/solve_report.h"
 
 namespace thinlayer {
@@ -23,6 +24,9 @@ std::vector<Active> bonded_statuses(const ContactProblem& problem);
 // One sparse solve; the report says converged, singular (a body held by nothing), or why the
 // residual stays above the tolerance (round-off floor or loss of accuracy). Requires
 // every_interface_bonded(problem).
-SolveReport solve_bonded(const ContactProblem& problem, const SolverOptions& options = {});
+// `factored`: a MixedSystem of this problem to solve with, left factored for another right-hand
+// side (MixedSystem::solve_again: SPEC §3 S6's estimate, one more substitution); null: a local one.
+SolveReport solve_bonded(const ContactProblem& problem, const SolverOptions& options = {},
+                         MixedSystem* factored = nullptr);
 
 }  // namespace thinlayer

@@ -106,7 +106,8 @@ void MixedSystem::fill(const std::vector<Active>& statuses, Eigen::VectorXd& rhs
   const int m2 = 2 * problem_.num_nodes();
   rhs = Eigen::VectorXd::Zero(ny_ + m2);
   rhs.head(ny_) = F_y_;
-  std::vector<std::pair<bool, bool>> jumps(problem_.num_nodes());
+  std::vector<std::pair<bool, bool>>& jumps = jump_rows_;
+  jumps.assign(problem_.num_nodes(), {false, false});
   for (int node = 0; node < problem_.num_nodes(); ++node) {
     jumps[node] = jump_rows(statuses[node], problem_.law(node));
     for (int c = 0; c < 2; ++c)
@@ -181,13 +182,35 @@ MixedSystem::Answer MixedSystem::solve(const std::vector<Active>& statuses) {
   Eigen::VectorXd rhs;
   fill(statuses, rhs);
   Answer answer;
-  answer.singular = !lu_.factor(A_);
+  answer.singular = singular_ = !lu_.factor(A_);
   answer.rcond = lu_.rcond();
+  factored_ = true;
   const Eigen::VectorXd x = lu_.solve(rhs);
   const Eigen::VectorXd y = x.head(ny_);
   answer.u = P_ * y;
   answer.y = y;
   answer.r = x.tail(2 * problem_.num_nodes());
+  for (const auto& [offset, size] : bands_) answer.band_z.push_back(y.segment(offset, size));
+  return answer;
+}
+
+MixedSystem::Answer MixedSystem::solve_again(const Eigen::VectorXd& body_forces, const Eigen::VectorXd& row_values) const {
+  if (!factored_) throw std::logic_error("MixedSystem::solve_again before any solve()");
+  const int m2 = 2 * problem_.num_nodes();
+  if (body_forces.size() != P_.rows() || row_values.size() != m2)
+    throw std::invalid_argument("MixedSystem::solve_again: the right-hand side does not fit the problem");
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(ny_ + m2);
+  rhs.head(ny_) = P_.transpose() * body_forces;  // a band's nodal forces in its column basis: Pᵀ f
+  for (int node = 0; node < problem_.num_nodes(); ++node)
+    for (int c = 0; c < 2; ++c)
+      if (c == 0 ? jump_rows_[node].first : jump_rows_[node].second) rhs[ny_ + 2 * node + c] = row_values[2 * node + c];
+  Answer answer;
+  answer.singular = singular_;
+  answer.rcond = lu_.rcond();
+  const Eigen::VectorXd x = lu_.solve(rhs);
+  const Eigen::VectorXd y = x.head(ny_);
+  answer.u = P_ * y;
+  answer.r = x.tail(m2);
   for (const auto& [offset, size] : bands_) answer.band_z.push_back(y.segment(offset, size));
   return answer;
 }

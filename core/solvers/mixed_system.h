@@ -24,6 +24,7 @@ namespace thinlayer {
 class MixedSystem {
  public:
   explicit MixedSystem(const ContactProblem& problem);
+  const ContactProblem& problem() const { return problem_; }
 
   struct Answer {
     Eigen::VectorXd u;                  // free DOFs, mm
@@ -55,6 +56,13 @@ class MixedSystem {
   // it. A film's translation held only by its membrane and a spring ρ gives κ_i ≈ ρ: its statuses
   // follow its forces, not its jumps.
   Eigen::VectorXd row_stiffness() const;
+  // The same statuses' system with another right-hand side, on the factorisation of the last
+  // solve() (one forward and back substitution, refined): body_forces (free DOFs, daN) on the
+  // equilibrium rows, row_values on each interface row that solve() made a jump equation (d = ...,
+  // mm; the force rows stay r = 0 and r_T = ∓f r_N). Nothing of the scene's own loads or imposed
+  // jumps: the answer is the response to this load alone (core/solvers/first_order_layer.h's
+  // correction, SPEC §3 S6). Throws std::logic_error before any solve().
+  Answer solve_again(const Eigen::VectorXd& body_forces, const Eigen::VectorXd& row_values) const;
 
  private:
   // One entry of a status row: where its value lives in A, and what it is.
@@ -84,6 +92,9 @@ class MixedSystem {
   std::vector<Spring> springs_;
   std::vector<BandLayout> layouts_;
   SparseLU lu_;
+  std::vector<std::pair<bool, bool>> jump_rows_;  // of the last solve(): which rows are equations d = ...
+  bool factored_ = false;
+  bool singular_ = false;
 };
 
 }  // namespace thinlayer

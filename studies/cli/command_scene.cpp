@@ -71,9 +71,10 @@ SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
 }
 
 void write_results(const std::string& path, const SceneFileScene& scene, const SceneFileBulk& bulk,
-                   const OutputRules& rules) {
+                   const OutputRules& rules, const LimitErrorEstimate* estimate) {
   auto out = open_results_file(path, rules);
   write_scene_file_scene(*out, scene, bulk);
+  if (estimate) write_limit_error_estimate(*out, scene.record.id, *estimate);
   write_checks(*out, {});
   out->commit();
 }
@@ -125,20 +126,31 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   }
   try {
     std::optional<RunPhase> phase(std::in_place, "solving the " + in.mode + " mode of " + in.scene);
-    const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options, in.eps)
+    // Limit mode: SPEC §3 S6's distance to the layer it stands for, from its first-order answer.
+    LimitSolveExtras extras;
+    extras.first_order = in.mode == "limit";
+    const SceneFileScene s = in.mode == "limit" ? solve_scene_file_limit(*bulk, in.solver, in.options, in.eps,
+                                                                         default_status_tolerance, false, extras)
                                                 : solve_scene_file_layer(*bulk, in.eps, in.solver, in.options);
+    std::optional<LimitErrorEstimate> estimate;
+    if (in.mode == "limit") estimate = limit_error_estimate(*bulk, s);
     // SPEC 1.3: what the paper's 3 % / 30x rule would have cost, solved beside (limit mode).
     ClassificationCost cost;
     if (in.mode == "limit") cost = classification_cost(*bulk, s, in.eps, in.options);
     if (!in.json) print_scene_solve(*bulk, in.mode, in.eps, s);
     if (!in.json && cost.differs) std::printf("  %s\n", classification_cost_line(*bulk, s, cost).c_str());
+    if (!in.json && estimate) print_limit_error_estimate(*estimate);
     phase.emplace("writing " + in.out);
-    if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force});
+    if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force}, estimate ? &*estimate : nullptr);
     phase.emplace("writing " + in.vtu);
     if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
-    if (in.json) std::printf("%s\n", scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu, &cost).c_str());
+    if (in.json) {
+      nlohmann::json j = nlohmann::json::parse(scene_solve_json(*bulk, in.scene, in.mode, s, in.out, in.vtu, &cost));
+      if (estimate) j["limit_error_estimate"] = limit_error_estimate_json(*estimate);
+      std::printf("%s\n", j.dump().c_str());
+    }
     if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (const std::string w = film_warning(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (const std::string w = displacement_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";

@@ -16,6 +16,7 @@
 #include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 #include "studies/cli/command_scene.h"
+#include "studies/cli/command_validity_map.h"
 #include "studies/drivers/scene_file_study.h"
 #include "studies/tools/stopwatch.h"
 #include "studies/cli/summary_json.h"
@@ -37,6 +38,7 @@
 #include "studies/drivers/thresholds_study.h"
 #include "studies/drivers/timing_study.h"
 #include "studies/drivers/validity_study.h"
+#include "studies/drivers/validity_map.h"
 #include "studies/tools/run_phase.h"
 
 namespace thinlayer {
@@ -205,6 +207,27 @@ std::vector<Check> run_lap_joint_study(bool verbose, H5Writer* out) {
   return run_scene_study(bulk, options, out).checks;
 }
 
+// The engineer's validity map of the shipped joints (SPEC 3 S3) on a small grid, so that verify stays
+// fast (4 s of its time on this machine): t/L 1e-2 and 1e-1 at nu_g 0.45, by E_g/E_a 1e-3 and 1e-1 on
+// the double lap (the map's corners), at E_g/E_a 1e-1 (an epoxy on aluminium) on the stepped lap and
+// the lap joint. The full map (7 x 7 x 2 cells) is `study validity-map --scene` (README, "The
+// engineer's validity map").
+std::vector<Check> run_validity_maps(int threads, bool verbose, H5Writer* out) {
+  std::vector<Check> checks;
+  for (const char* joint : {"double_lap", "stepped_lap", "lap_joint"}) {
+    SceneFileBulk bulk(read_scene_spec(std::string(THINLAYER_CASES_DIR) + "/" + joint + "/" + joint + ".json"));
+    ValidityMapOptions options;
+    options.t_over_L = {1e-2, 1e-1};
+    options.E_ratio = std::string(joint) == "double_lap" ? std::vector<double>{1e-3, 1e-1} : std::vector<double>{1e-1};
+    options.nu = {0.45};
+    options.threads = threads;
+    options.verbose = verbose;
+    const std::vector<Check> c = run_validity_map(bulk, options, out).checks;
+    checks.insert(checks.end(), c.begin(), c.end());
+  }
+  return checks;
+}
+
 int report_checks(const std::vector<Check>& checks) {
   int failed = 0;
   for (const Check& c : checks)
@@ -221,7 +244,7 @@ int report_checks(const std::vector<Check>& checks) {
 namespace {
 
 const std::vector<std::string> study_names = {"table3",     "dovetail",    "convergence", "validity",
-                                              "thresholds", "asymptotics", "timing",      "stress"};
+                                              "thresholds", "asymptotics", "timing",      "stress", "validity-map"};
 
 // The options of `study` and `verify`, with their help; on verify, those it does not read are
 // declared too (so that giving one says "does not apply to verify") but not shown.
@@ -272,6 +295,14 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
                      "convergence, validity: S2 (and S3) on your own joint, a scene file\n"
                      "(README, \"Your own joint\")")
             ->type_name("FILE.json"));
+  group(c.add_option("--thickness-ratios", a.thickness_ratios,
+                     "validity-map: the glue's thicknesses t/L (default 1e-3 ... 1e-1, 3 a decade)")
+            ->type_name("LIST")->check(number_list("thickness-ratios")));
+  group(c.add_option("--modulus-ratios", a.modulus_ratios,
+                     "validity-map: the glue's Young's moduli E_g/E_a (default 1e-4 ... 1e-1, 2 a decade)")
+            ->type_name("LIST")->check(number_list("modulus-ratios")));
+  group(c.add_option("--poisson", a.poisson, "validity-map: the glue's Poisson ratios (default 0.3,0.45)")
+            ->type_name("LIST")->check(number_list("poisson")));
   group(c.add_option("--max-nodes", a.max_nodes,
                      "with --scene: refuse a mesh of more nodes than N, before meshing\n"
                      "(estimated from the geometry and mesh_size; default 2000000)")
@@ -287,7 +318,8 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
 CLI::App* declare_study(CLI::App& thinlayer, StudyArgs& a) {
   CLI::App* c = thinlayer.add_subcommand(
       "study",
-      "run a study: table3, dovetail, convergence, validity, thresholds, asymptotics, timing or stress\n"
+      "run a study: table3, dovetail, convergence, validity, thresholds, asymptotics, timing, stress or\n"
+      "validity-map\n"
       "\n"
       "Without --out the study prints its tables and saves nothing. An option the study does not\n"
       "read is refused, as is an option given twice or a stray argument.\n"
@@ -316,6 +348,11 @@ CLI::App* declare_study(CLI::App& thinlayer, StudyArgs& a) {
       "               converges or stops with a named cause (iteration cap, singular system, loss of\n"
       "               accuracy with a condition estimate), and no NaN/Inf is written\n"
       "\n"
+      "  validity-map the engineer's validity map of a joint (--scene FILE.json, required): the finite\n"
+      "               spring law of a glue at its own thickness against its meshed layer over t/L and\n"
+      "               E_g/E_a (and nu_g), at h and h/2, SPEC 3 S6's estimate judged on it, the\n"
+      "               paper's 3 % / 30x rule's cost; spread over MPI ranks\n"
+      "\n"
       "Your own joint: study convergence --scene FILE.json, study validity --scene FILE.json run S2\n"
       "and S3 on a scene file (README, \"Your own joint\"); options --out, --eps LIST (mm), --tolerance\n"
       "(default 1e-10 there), --threads, --quiet, --max-nodes, --mesh-timeout, --peak-distance D (mm) and\n"
@@ -327,7 +364,7 @@ CLI::App* declare_study(CLI::App& thinlayer, StudyArgs& a) {
   c->add_option("name", a.name)->check(one_of("study", study_names))->group("");
   std::set<std::string> all;
   for (const auto& [study, options] : study_options) all.insert(options.begin(), options.end());
-  all.insert({"relaxation-cap", "friction-path", "scene", "max-nodes", "mesh-timeout"});
+  all.insert({"relaxation-cap", "friction-path", "scene", "max-nodes", "mesh-timeout", "thickness-ratios", "modulus-ratios", "poisson"});
   declare_study_options(*c, a, all);
   c->footer("Exit status: 0 when every check of the study passes, 1 otherwise, 2 on bad input.");
   return c;
@@ -339,8 +376,8 @@ CLI::App* declare_verify(CLI::App& thinlayer, StudyArgs& a) {
       "run every study, write the summary and the report\n"
       "\n"
       "Runs the studies S1 (table3), S2-S4 (convergence, validity, thresholds), S5 (timing, quick,\n"
-      "and stress), and S2-S3 on the shipped single-lap shear joint (cases/lap_joint, a scene file),\n"
-      "and writes\n"
+      "and stress), S2-S3 on the shipped single-lap shear joint (cases/lap_joint, a scene file), and\n"
+      "the validity map of the shipped joints on a small grid (study validity-map), and writes\n"
       "  DIR/results.h5           every scene, study table and check, the environment\n"
       "  DIR/summary.json         every check: id, pass, expected, got, tolerance; and the timings\n"
       "  DIR/report/index.html    the report, with its figures (made from results.h5 alone:\n"
@@ -364,6 +401,8 @@ int command_study(const CLI::App& command, const StudyArgs& a) {
       throw std::invalid_argument(
           "which study? (table3, dovetail, convergence, validity, thresholds, asymptotics, timing or stress)");
     // S2/S3 on the user's own joint (SPEC §5).
+    // The engineer's validity map of a joint (SPEC 3 S3), spread over MPI ranks like the others.
+    if (name == "validity-map") return command_study_validity_map(command, a);
     if (given(command, "scene")) return command_study_scene(name, command, a);
     in = parse(command, a, name);
   } catch (const std::exception& e) {
@@ -435,6 +474,7 @@ int command_verify(const CLI::App& command, const StudyArgs& a) {
     // A joint beyond the paper's two (SPEC §5): the shipped single-lap shear joint, both modes,
     // S2 and S3, through the same scene-file machinery a user's joint goes through.
     timed("lap_joint", [&] { return run_lap_joint_study(in.verbose, out.get()); });
+    timed("validity_map", [&] { return run_validity_maps(in.threads, in.verbose, out.get()); });
     write_checks(*out, checks);
     out->commit();
     write_text_atomically(summary, summary_json(checks, timings));

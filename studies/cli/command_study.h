@@ -12,6 +12,7 @@ namespace thinlayer {
 struct StudyArgs {
   std::string name, out, cases, scene;
   NumberList eps, rate_eps, friction_path;
+  NumberList thickness_ratios, modulus_ratios, poisson;  // the validity map's grid
   double tolerance = 0, mesh_timeout = 0;
   double peak_distance = 0;  // scene studies: d of the peaks judged at a distance from the bondline ends (mm)
   int repeats = 0, relaxation_cap = 0, threads = 0, bisection_steps = 0;

@@ -25,6 +25,7 @@
 #include "studies/drivers/joint_closed_forms.h"
 #include "studies/drivers/table3_study.h"
 #include "studies/tools/bondline_fields.h"
+#include "studies/tools/cauchy_fit.h"
 #include "studies/tools/rate_fit.h"
 #include "studies/tools/scene_distance.h"
 
@@ -102,6 +103,9 @@ struct SceneStudyResult {
   // The layer model's Cauchy differences between neighbouring samples, and the rate they give.
   std::map<std::string, std::vector<double>> cauchy;
   std::map<std::string, std::optional<PowerLawFit>> cauchy_fit;
+  // The rate where the grid ends: the last three differences, and whether the local slopes have
+  // settled (studies/tools/cauchy_fit.h). The rate check reads this one.
+  std::map<std::string, CauchyTail> cauchy_tail;
   std::vector<SceneFloorRow> floor;                                 // by decreasing h
   std::map<std::string, std::optional<PowerLawFit>> floor_rate;     // the floor's rate in h
   std::vector<ScenePeak> peaks;
@@ -118,8 +122,8 @@ struct SceneStudyResult {
 // every scene it solved under /scenes when `out` is given, and beside it the bondline fields of
 // every scene as CSV (bondline_fields.csv). Checks (ids "scene.<name>.*"): the limit and every
 // layer scene converged; for the paper's family, the distance u decreases as ε decreases and,
-// where the asymptotics predict a rate for the scene's (γ, δ), the rate of u from the Cauchy
-// differences within rate_tolerance of it.
+// where the asymptotics predict a rate for the scene's (γ, δ), the rate of u from the last three
+// Cauchy differences within rate_tolerance of it, its local slopes settled (the last two within 0.1).
 SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& options, H5Writer* out);
 
 // The thicknesses the study samples (mm, decreasing): the scene's "eps", or for the paper's

@@ -179,9 +179,55 @@ void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double 
     if (eps == 0 && !bulk.spec().engineer_glue_only())
       throw std::invalid_argument("layer mode needs --eps (the scene's layers are the paper's family, which has no thickness of its own)");
     check_layer_mode(bulk, eps);
-  } else if (eps > 0 && !bulk.has_engineer_glue()) {
-    throw std::invalid_argument("--eps applies to the layer mode only (and, in limit mode, to an engineer's glue, whose law depends on its thickness)");
+  } else if (eps > 0 && !bulk.spec().has_layer()) {
+    throw std::invalid_argument("--eps applies to a layer: this scene gives limit laws only ('law')");
   }
+  // Limit mode: --eps chooses an engineer's glue's law (SPEC 1.3 at that thickness), and for every
+  // layer the thickness SPEC 3 S6's estimate measures the law against (the paper's family keeps its law).
+  if (mode == "limit" && eps > 0) check_layer_mode(bulk, eps);
+}
+
+void print_limit_error_estimate(const LimitErrorEstimate& e) {
+  if (!e.computed) {
+    std::printf("  distance to the layer (SPEC 3 S6): %s\n", e.note.c_str());
+    return;
+  }
+  std::printf("  distance to the layer it stands for (SPEC 3 S6, from its first-order answer: one extra %s and the\n"
+              "  end cell; %.3f s):\n",
+              e.extra_factorisation ? "factorisation and solve at the limit's statuses" : "solve on the limit's factorisation",
+              e.time_s);
+  const std::pair<const char*, double> lines[] = {{"the reactions", e.reactions},
+                                                  {"the adherents' displacements", e.u},
+                                                  {"sigma_N on the bondlines", e.sigma_N},
+                                                  {"sigma_T on the bondlines", e.sigma_T}};
+  for (const auto& [what, value] : lines)
+    std::printf("    the limit law is within %s %% of a layer of thickness %s mm for %s\n", significant(100 * value, 2).c_str(),
+                plain(e.eps).c_str(), what);
+}
+
+nlohmann::json limit_error_estimate_json(const LimitErrorEstimate& e) {
+  if (!e.computed) return {{"computed", false}, {"eps", e.eps}, {"note", e.note}};
+  return {{"eps", e.eps}, {"u", e.u}, {"reactions", e.reactions}, {"sigma_N", e.sigma_N}, {"sigma_T", e.sigma_T},
+          {"time_s", e.time_s}};
+}
+
+void write_limit_error_estimate(H5Writer& file, const std::string& scene_id, const LimitErrorEstimate& e) {
+  const std::string g = "/scenes/" + scene_id;
+  file.attr(g, "limit_error_estimate_computed", e.computed ? 1 : 0);
+  file.attr(g, "limit_error_estimate_eps", e.eps);
+  file.attr(g, "limit_error_estimate_eps_units", std::string("mm"));
+  if (!e.computed) {
+    file.attr(g, "limit_error_estimate_note", e.note);
+    return;
+  }
+  file.attr(g, "limit_error_estimate_u", e.u);
+  file.attr(g, "limit_error_estimate_reactions", e.reactions);
+  file.attr(g, "limit_error_estimate_sigma_N", e.sigma_N);
+  file.attr(g, "limit_error_estimate_sigma_T", e.sigma_T);
+  file.attr(g, "limit_error_estimate_description",
+            std::string("SPEC 3 S6: the estimated relative distance (1 = 100 %) of this limit answer to the layer model "
+                        "of thickness eps it stands for, in S2's norms (reactions: every support group together), "
+                        "from its first-order answer (studies/limit_error_estimate.md)"));
 }
 
 std::string no_load_warning(const SceneFileScene& s) {

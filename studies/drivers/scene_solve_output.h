@@ -8,7 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cases/scene/scene_file_scenes.h"
+#include "core/io/h5_writer.h"
 #include "studies/drivers/classification_cost.h"
+#include "studies/tools/limit_error_estimate.h"
 
 namespace thinlayer {
 
@@ -22,13 +24,23 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
 
 // The thickness a `solve --scene` asks for (0: none given), checked against the scene: the layer
 // mode needs one (--eps, or an engineer's glue's own) the joint can hold; in limit mode --eps
-// chooses an engineer's glue's law (SPEC §1.3 at that thickness), and means nothing otherwise.
+// chooses an engineer's glue's law (SPEC §1.3 at that thickness) and, for any layer, the thickness
+// of the layer SPEC §3 S6's estimate measures the law against (a joint of laws only refuses it).
 // Throws std::invalid_argument.
 void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps);
 
 // --json's "film" object of a layer scene's record (SPEC §1.5: slip_over_h, strain_max), null for
 // any other record; both forms of `solve` write it.
 nlohmann::json film_json(const SceneRecord& record);
+
+// SPEC §3 S6 in limit mode: "the limit law is within X % of a layer of thickness t" for the
+// reactions, the adherents' displacements, σ_N and σ_T (or why it was not computed).
+void print_limit_error_estimate(const LimitErrorEstimate& estimate);
+// --json's "limit_error_estimate": {eps, u, reactions, sigma_N, sigma_T} (relative, 1 = 100 %), or
+// {"computed": false, "note": ...}.
+nlohmann::json limit_error_estimate_json(const LimitErrorEstimate& estimate);
+// The same as attributes of the scene's group in a results file (limit_error_estimate_<field>).
+void write_limit_error_estimate(H5Writer& file, const std::string& scene_id, const LimitErrorEstimate& estimate);
 
 // "" when the joint carries a load; else one line saying that every bondline node is open.
 std::string no_load_warning(const SceneFileScene& scene);

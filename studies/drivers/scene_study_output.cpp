@@ -92,6 +92,17 @@ void print_scene_study(const SceneFileBulk& bulk, const SceneStudyResult& r, con
   std::printf("  %-8s", "p Cauchy");
   for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", rate_text(r.cauchy_fit.at(q)).c_str());
   std::printf("   (the layer model's differences between neighbouring eps: the mesh floor cancels)\n");
+  std::printf("  %-8s", "p tail");
+  for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", rate_text(r.cauchy_tail.at(q).fit).c_str());
+  std::printf("   (the last three differences: the rate where the grid ends)\n");
+  std::printf("  %-8s", "slopes");
+  for (const std::string& q : scene_distance_quantities()) {
+    const std::vector<double>& s = r.cauchy_tail.at(q).local_slopes;
+    std::string last;
+    for (std::size_t k = s.size() > 2 ? s.size() - 2 : 0; k < s.size(); ++k) last += (last.empty() ? "" : " ") + fixed(s[k], 2);
+    std::printf(" %10s", last.c_str());
+  }
+  std::printf("   (the last two local slopes; settled: within 0.1)\n");
   if (r.p_predicted)
     std::printf("  predicted p = %g (the Table 2 case with the scene's gamma, delta; studies/convergence_rates.md)\n",
                 *r.p_predicted);
@@ -341,7 +352,16 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
     put(out, c + "/d_" + q, r.cauchy.at(q), "1 (relative)",
         "distance between the layer model at eps and at the next (thinner) sample: " + quantity_descriptions().at(q));
     write_fits(out, c, q, r.cauchy_fit.at(q), "p_");
+    const CauchyTail& tail = r.cauchy_tail.at(q);
+    out.attr(c, "p_tail_" + q, tail.fit ? tail.fit->p : 0.0);
+    out.attr(c, "p_tail_" + q + "_stderr", tail.fit ? tail.fit->p_stderr : 0.0);
+    out.attr(c, "fitted_tail_" + q, tail.fit ? 1 : 0);
+    out.attr(c, "settled_" + q, tail.settled ? 1 : 0);
+    put(out, c + "/local_slope_" + q, tail.local_slopes, "1",
+        "the local rate between neighbouring differences of " + q + " (NaN where a difference is 0)");
   }
+  out.attr(c, "tail_description",
+           "p_tail_<q>: the Cauchy fit of the last three differences; settled_<q>: the last two local slopes within 0.1");
   out.attr(c, "description", "d_k = C eps_k^p (1 - (eps_k+1/eps_k)^p): the rate p with the mesh floor cancelled");
 
   if (!r.floor.empty()) {

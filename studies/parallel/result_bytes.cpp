@@ -75,4 +75,24 @@ void get(ByteReader& r, DovetailScene& s) {
   get(r, s.meshing_time_s);
 }
 
+void put(ByteWriter& w, const MapCellLevel& c) {
+  put(w, c.h), put(w, c.converged), put(w, c.failure), put(w, c.layer_residual), put(w, c.limit_residual);
+  put(w, c.measured), put(w, c.estimate), put(w, c.interior), put(w, c.layer_time_s), put(w, c.limit_time_s), put(w, c.estimate_time_s);
+}
+void get(ByteReader& r, MapCellLevel& c) {
+  get(r, c.h), get(r, c.converged), get(r, c.failure), get(r, c.layer_residual), get(r, c.limit_residual);
+  get(r, c.measured), get(r, c.estimate), get(r, c.interior), get(r, c.layer_time_s), get(r, c.limit_time_s), get(r, c.estimate_time_s);
+}
+
+void put(ByteWriter& w, const MapCell& c) {
+  put(w, c.spec.t_over_L), put(w, c.spec.E_ratio), put(w, c.spec.nu), put(w, c.thickness), put(w, c.E), put(w, c.shear_lag);
+  put(w, c.law_case), put(w, c.rule_case), put(w, c.coarse), put(w, c.fine);
+  put(w, c.rule_solved), put(w, c.rule_converged), put(w, c.rule_measured);
+}
+void get(ByteReader& r, MapCell& c) {
+  get(r, c.spec.t_over_L), get(r, c.spec.E_ratio), get(r, c.spec.nu), get(r, c.thickness), get(r, c.E), get(r, c.shear_lag);
+  get(r, c.law_case), get(r, c.rule_case), get(r, c.coarse), get(r, c.fine);
+  get(r, c.rule_solved), get(r, c.rule_converged), get(r, c.rule_measured);
+}
+
 }  // namespace thinlayer

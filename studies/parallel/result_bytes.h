@@ -15,6 +15,7 @@
 #include "cases/bar/bar_scenes.h"
 #include "cases/dovetail/dovetail_scenes.h"
 #include "cases/layer_scene.h"
+#include "studies/tools/map_cell.h"
 
 namespace thinlayer {
 
@@ -36,5 +37,9 @@ void put(ByteWriter& w, const BarLayerScene& s);
 void get(ByteReader& r, BarLayerScene& s);
 void put(ByteWriter& w, const DovetailScene& s);
 void get(ByteReader& r, DovetailScene& s);
+void put(ByteWriter& w, const MapCellLevel& c);
+void get(ByteReader& r, MapCellLevel& c);
+void put(ByteWriter& w, const MapCell& c);
+void get(ByteReader& r, MapCell& c);
 
 }  // namespace thinlayer

@@ -70,4 +70,40 @@ std::optional<PowerLawFit> fit_cauchy_differences(const std::vector<double>& eps
   return fit;
 }
 
+double cauchy_local_slope(double eps0, double eps1, double eps2, double d0, double d1) {
+  if (!(d0 > 0) || !(d1 > 0)) return std::nan("");
+  const double log_rho0 = std::log(eps1 / eps0), log_rho1 = std::log(eps2 / eps1);
+  // g(p) = ln(d0/d1) − [p ln(ε0/ε1) + ln(1 − ρ0^p) − ln(1 − ρ1^p)], continuous through p = 0
+  // (where the bracket tends to ln(log_rho0 / log_rho1)) and increasing in p's bracket for p > 0.
+  auto model = [&](double p) {
+    if (std::abs(p) < 1e-9) return std::log(log_rho0 / log_rho1);
+    return -p * log_rho0 + std::log(std::expm1(p * log_rho0) / std::expm1(p * log_rho1));  // same sign: any p
+  };
+  const double target = std::log(d0 / d1);
+  double lo = -4, hi = 8;
+  if ((model(lo) - target) * (model(hi) - target) > 0) return std::nan("");
+  for (int it = 0; it < 100; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    ((model(mid) - target) * (model(lo) - target) <= 0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+CauchyTail fit_cauchy_tail(const std::vector<double>& eps, const std::vector<double>& difference, int count,
+                           double settle) {
+  if (count < 3) throw std::invalid_argument("fit_cauchy_tail: a fit needs at least 3 differences");
+  CauchyTail tail;
+  const std::size_t n = difference.size();
+  if (n < static_cast<std::size_t>(count)) return tail;
+  tail.fit = fit_cauchy_differences(std::vector<double>(eps.end() - count - 1, eps.end()),
+                                    std::vector<double>(difference.end() - count, difference.end()));
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    tail.local_slopes.push_back(cauchy_local_slope(eps[k], eps[k + 1], eps[k + 2], difference[k], difference[k + 1]));
+  if (tail.local_slopes.size() >= 2) {
+    const double a = tail.local_slopes.back(), b = tail.local_slopes[tail.local_slopes.size() - 2];
+    tail.settled = std::isfinite(a) && std::isfinite(b) && std::abs(a - b) <= settle;
+  }
+  return tail;
+}
+
 }  // namespace thinlayer

@@ -26,4 +26,10 @@ std::string plain(double x) {
   return buf;
 }
 
+std::string significant(double x, int digits) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+  return buffer;
+}
+
 }  // namespace thinlayer

@@ -14,5 +14,7 @@ std::string sci(double x, int decimals = 3);
 std::string fixed(double x, int decimals);
 // The shortest natural form (printf %g), e.g. plain(0.025) = "0.025", plain(1e-4) = "0.0001".
 std::string plain(double x);
+// `digits` significant digits, without exponent where printf %g has none, e.g. significant(0.1834, 2) = "0.18".
+std::string significant(double x, int digits);
 
 }  // namespace thinlayer
