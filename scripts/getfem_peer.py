@@ -247,6 +247,16 @@ class Mapping:
         return U[:pb.n].copy(), r
 
 
+class Clock:
+    """Wall and CPU time of this process (one thread: the CPU time is what the load leaves alone)."""
+
+    def __init__(self):
+        self.wall, self.cpu = time.perf_counter(), time.process_time()
+
+    def read(self):
+        return time.perf_counter() - self.wall, time.process_time() - self.cpu
+
+
 def spmat(matrix, folder, name):
     """A SciPy matrix as a GetFEM Spmat, through a Matrix Market file (every entry, general)."""
     path = os.path.join(folder, name + ".mtx")
@@ -254,29 +264,27 @@ def spmat(matrix, folder, name):
     return gf.Spmat("load", "mm", path)
 
 
-def bonded_start(pb, mapping, folder, repeat):
+def bonded_start(pb, mapping, folder):
     """The bonded start in GetFEM: every node stuck (thinlayer's stuck_statuses), i.e. d = 0 on each
     row that carries a force, r = 0 on the others. With the springs in e, d = B_aug U + g_D, so the
     stuck rows are the linear constraint B_s U = −g_D,s: GetFEM's constraint brick with multipliers
-    μ (it adds B_sᵀ μ to K U, so K U = F − B_sᵀ μ: r_s = −μ), one linear solve, `repeat` times (a
-    fresh model each, built untimed). (u, r, median seconds)."""
+    μ (it adds B_sᵀ μ to K U, so K U = F − B_sᵀ μ: r_s = −μ), one linear solve (the model built
+    untimed). (u, r, (wall s, CPU s))."""
     stuck_T = pb.tangential_active[mapping.contact]
     Bs = sp.vstack([mapping.BN, mapping.BT[stuck_T, :]], format="csc")
     rows = np.concatenate([2 * mapping.contact, 2 * mapping.contact[stuck_T] + 1])
-    seconds = []
-    for _ in range(repeat):
-        md = gf.Model("real")
-        md.add_variable("U", mapping.size)
-        md.add_explicit_matrix("U", "U", spmat(mapping.K, folder, "K_aug"), 1, 0)
-        md.add_explicit_rhs("U", mapping.F)
-        md.add_variable("mu", rows.size)
-        md.add_constraint_with_multipliers("U", "mu", spmat(Bs, folder, "B_stuck"), -pb.gD[rows])
-        start = time.perf_counter()
-        md.solve("lsolver", "auto")
-        seconds.append(time.perf_counter() - start)
+    md = gf.Model("real")
+    md.add_variable("U", mapping.size)
+    md.add_explicit_matrix("U", "U", spmat(mapping.K, folder, "K_aug"), 1, 0)
+    md.add_explicit_rhs("U", mapping.F)
+    md.add_variable("mu", rows.size)
+    md.add_constraint_with_multipliers("U", "mu", spmat(Bs, folder, "B_stuck"), -pb.gD[rows])
+    clock = Clock()
+    md.solve("lsolver", "auto")
+    seconds = clock.read()
     r = np.zeros(2 * pb.m)
     r[rows] = -md.variable("mu")
-    return md.variable("U")[:pb.n].copy(), r, median(seconds)
+    return md.variable("U")[:pb.n].copy(), r, seconds
 
 
 class GetfemModel:
@@ -305,18 +313,18 @@ class GetfemModel:
         self.md.set_variable("lambda_T", lambda_T)
 
     def solve(self, options):
-        """Model.solve: (Newton steps, GetFEM's converged flag, seconds, error or None)."""
+        """Model.solve: (Newton steps, GetFEM's converged flag, (wall s, CPU s), error or None)."""
         args = ["max_iter", options.max_iter, "max_res", options.max_res, "lsearch", options.lsearch,
                 "lsolver", options.lsolver]
         if options.noisy:
             args = ["noisy"] + args
-        start = time.perf_counter()
+        clock = Clock()
         try:
             steps, converged = self.md.solve(*args)
             error = None
         except Exception as e:  # a GetFEM error (e.g. a singular tangent it cannot perturb away)
             steps, converged, error = -1, 0, str(e).strip().splitlines()[-1]
-        return steps, bool(converged), time.perf_counter() - start, error
+        return steps, bool(converged), clock.read(), error
 
     def state(self):
         return self.md.variable("U"), self.md.variable("lambda_N"), self.md.variable("lambda_T")
@@ -340,17 +348,9 @@ def median(values):
     return sorted(values)[len(values) // 2]
 
 
-def run_start(pb, mapping, start_state, options, folder):
-    """options.repeat solves from one start (a fresh model each, built untimed); the last's answer."""
-    runs = []
-    for _ in range(options.repeat):
-        model = GetfemModel(mapping, options.augmentation, folder)
-        model.start(*start_state)
-        runs.append((model.solve(options), model))
-    (steps, converged, _, error), model = runs[-1]
-    result = {"steps": steps, "getfem_converged": converged, "error": error,
-              "times": [run[0][2] for run in runs]}
-    result["time"] = median(result["times"])
+def judge(pb, mapping, model, steps, converged, error, options):
+    """A GetFEM answer against thinlayer's: its SPEC residual, the relative distances, the statuses."""
+    result = {"steps": steps, "getfem_converged": converged, "error": error}
     u, r = mapping.answer(pb, *model.state())
     finite = np.all(np.isfinite(u)) and np.all(np.isfinite(r))
     result["spec_residual"] = spec_residual(pb, u, r) if finite else math.inf
@@ -369,8 +369,17 @@ def run_start(pb, mapping, start_state, options, folder):
     return result
 
 
-def peer(folder, options):
-    """GetFEM on one exported problem: the mapping's own checks, then each start."""
+def timed(samples):
+    """Median wall and CPU seconds of (wall, CPU) samples, and the samples."""
+    return {"time": median([w for w, _ in samples]), "cpu": median([c for _, c in samples]),
+            "times": [w for w, _ in samples], "cpus": [c for _, c in samples]}
+
+
+def peer(folder, options, thinlayer_sample=None):
+    """GetFEM on one exported problem: the mapping's own checks, then options.repeat rounds, each a
+    thinlayer solve (thinlayer_sample(): (wall s, CPU s), when given: interleaved, so that both see
+    the same load), GetFEM's bonded solve, and a GetFEM solve from each start (a fresh model each,
+    built untimed). Medians over the rounds; the answers judged are the last round's."""
     pb = Problem(folder)
     mapping = Mapping(pb)
     options = argparse.Namespace(**vars(options))
@@ -384,13 +393,13 @@ def peer(folder, options):
            "augmentation": options.augmentation, "max_res": options.max_res, "thinlayer": pb.thinlayer}
 
     # The mapping's checks before any GetFEM solve: thinlayer's answer is an answer of the mapped
-    # problem (its SPEC residual, recomputed here), the bonded start agrees with thinlayer's.
+    # problem (its SPEC residual, recomputed here; GetFEM's own residual at it).
     out["thinlayer_spec_residual"] = spec_residual(pb, pb.u, pb.r)
     out["thinlayer_status_recomputed_differ"] = int(np.sum(statuses(pb, pb.r) != pb.status))
 
+    samples = {"thinlayer": [], "bonded_solve": [], "rest": [], "bonded": []}
+    last = {}
     with tempfile.TemporaryDirectory() as tmp:
-        u_b, r_b, out["bonded_time"] = bonded_start(pb, mapping, tmp, options.repeat)
-        out["bonded_vs_thinlayer"] = max(relative(u_b, pb.u_bonded), relative(r_b, pb.r_bonded))
         # GetFEM's own residual at thinlayer's answer: its equations of U (force, relative to ‖F‖)
         # and of the multipliers ((λ − projection) / r, mm, relative to ‖B u‖): a wrong sign shows here.
         model = GetfemModel(mapping, options.augmentation, tmp)
@@ -400,10 +409,28 @@ def peer(folder, options):
         out["thinlayer_in_getfem_U"] = np.linalg.norm(rhs[model.rows("U")]) / np.linalg.norm(mapping.F)
         multipliers = np.concatenate([rhs[model.rows(v)] for v in ("lambda_N", "lambda_T")])
         out["thinlayer_in_getfem_lambda"] = np.linalg.norm(multipliers) / np.linalg.norm(pb.B @ pb.u)
+
         zero = (np.zeros(mapping.size), np.zeros(mapping.contact.size), np.zeros(mapping.contact.size))
-        for name in options.starts:
-            state = mapping.state(pb, u_b, r_b) if name == "bonded" else zero
-            out[name] = run_start(pb, mapping, state, options, tmp)
+        for _ in range(options.repeat):
+            if thinlayer_sample:
+                samples["thinlayer"].append(thinlayer_sample())
+            u_b, r_b, seconds = bonded_start(pb, mapping, tmp)
+            samples["bonded_solve"].append(seconds)
+            for name in options.starts:
+                model = GetfemModel(mapping, options.augmentation, tmp)
+                model.start(*(mapping.state(pb, u_b, r_b) if name == "bonded" else zero))
+                steps, converged, seconds, error = model.solve(options)
+                samples[name].append(seconds)
+                last[name] = (model, steps, converged, error)
+    out["bonded_vs_thinlayer"] = max(relative(u_b, pb.u_bonded), relative(r_b, pb.r_bonded))
+    out["bonded_solve"] = timed(samples["bonded_solve"])
+    if not samples["thinlayer"]:  # no interleaving: the exporter's own solves
+        t = pb.thinlayer
+        samples["thinlayer"] = list(zip(t["solve_time_s"], t.get("call_cpu_s", [math.nan] * len(t["solve_time_s"]))))
+    out["thinlayer_time"] = timed(samples["thinlayer"])
+    for name, (model, steps, converged, error) in last.items():
+        out[name] = judge(pb, mapping, model, steps, converged, error, options)
+        out[name].update(timed(samples[name]))
     return out
 
 
@@ -416,32 +443,32 @@ def load():
 
 
 def format_start(s):
-    if s is None:
-        return "-"
-    mark = "yes" if s["converged"] else ("NO" + (" (%s)" % s["error"][:60] if s["error"] else ""))
-    return "%3d steps %8.4f s  %s" % (s["steps"], s["time"], mark)
+    mark = "converged" if s["converged"] else ("NOT converged" + (" (%s)" % s["error"][:60] if s["error"] else ""))
+    return "%d steps, %.4f s (CPU %.4f s), %s" % (s["steps"], s["time"], s["cpu"], mark)
+
+
+def samples_text(timing):
+    return ", ".join("%.3f/%.3f" % wc for wc in zip(timing["times"], timing["cpus"]))
 
 
 def print_result(res):
-    t = res["thinlayer"]
+    t, tt, bs = res["thinlayer"], res["thinlayer_time"], res["bonded_solve"]
     print("h = %g mm: %d nodes on S, %d free DOFs, %d spring DOFs; GetFEM r = %.4g, max_res = %.3g" %
           (res["h"], res["nodes"], res["n_free"], res["aux"], res["augmentation"], res["max_res"]))
     print("  mapping checks: thinlayer's answer has SPEC residual %.2e here (its own %.2e), statuses recomputed "
           "differ at %d nodes; GetFEM's residual at thinlayer's answer: U rows %.1e, multiplier rows %.1e "
-          "(relative); bonded start vs thinlayer's %.1e (%.4f s)" %
+          "(relative); GetFEM's bonded start vs thinlayer's %.1e" %
           (res["thinlayer_spec_residual"], t["residual"]["value"], res["thinlayer_status_recomputed_differ"],
-           res["thinlayer_in_getfem_U"], res["thinlayer_in_getfem_lambda"], res["bonded_vs_thinlayer"],
-           res["bonded_time"]))
-    print("  thinlayer: %s, %d steps, %.4f s (median of %d: %s), residual %.2e, %s" %
-          (t["method"], t["steps"], t["solve_time_median_s"], len(t["solve_time_s"]),
-           ", ".join("%.4f" % x for x in t["solve_time_s"]), t["residual"]["value"], t["stop_cause"]))
+           res["thinlayer_in_getfem_U"], res["thinlayer_in_getfem_lambda"], res["bonded_vs_thinlayer"]))
+    print("  thinlayer: %s, %d steps, %.4f s (CPU %.4f s), residual %.2e, %s; wall/CPU samples %s" %
+          (t["method"], t["steps"], tt["time"], tt["cpu"], t["residual"]["value"], t["stop_cause"], samples_text(tt)))
+    print("  GetFEM bonded solve: %.4f s (CPU %.4f s); samples %s" % (bs["time"], bs["cpu"], samples_text(bs)))
     for name in ("rest", "bonded"):
         s = res.get(name)
         if s is None:
             continue
-        print("  GetFEM from %-6s: %s; GetFEM's flag %s; SPEC residual %.2e; times %s" %
-              (name, format_start(s), s["getfem_converged"], s["spec_residual"],
-               ", ".join("%.4f" % x for x in s["times"])))
+        print("  GetFEM from %s: %s; GetFEM's flag %s; SPEC residual %.2e; samples %s" %
+              (name, format_start(s), s["getfem_converged"], s["spec_residual"], samples_text(s)))
         print("      vs thinlayer: reactions %.1e, u %.1e, r %.1e, sigma %.1e; statuses differ at %d of %d nodes "
               "(GetFEM gap/slide/stick %s, thinlayer %s)" %
               (s["reactions"], s["u"], s["r"], s["sigma"], s["status_differ"], res["nodes"], s["counts"],
@@ -449,21 +476,20 @@ def print_result(res):
 
 
 def print_table(results):
-    """One row per size. thinlayer's steps are factorisations, its bonded solve the first of them;
-    GetFEM's are Newton steps after its own bonded solve (one more linear solve, timed apart)."""
+    """One row per size, medians. thinlayer's steps are factorisations, its bonded solve the first of
+    them; GetFEM's are Newton steps after its own bonded solve (one more linear solve, timed apart).
+    Ratios of wall times, and of CPU times in brackets."""
     print()
     print("| h (mm) | nodes on S | free DOFs | thinlayer: steps, s | GetFEM from bonded: bonded solve s + Newton "
-          "steps, s | GetFEM / thinlayer (with its bonded solve) | GetFEM from rest | GetFEM vs thinlayer: "
-          "reactions, u, r, statuses differing |")
-    print("|---|---|---|---|---|---|---|---|")
+          "steps, s | GetFEM (with its bonded solve) / thinlayer: wall [CPU] | GetFEM from rest | GetFEM vs "
+          "thinlayer: reactions, u, r, statuses differing | load (1 min) |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for res in results:
-        t, b, z = res["thinlayer"], res.get("bonded"), res.get("rest")
-        tl = t["solve_time_median_s"]
-        row = ["%g" % res["h"], "%d" % res["nodes"], "%d" % res["n_free"], "%d, %.3f" % (t["steps"], tl)]
+        t, tt, bs, b, z = res["thinlayer"], res["thinlayer_time"], res["bonded_solve"], res.get("bonded"), res.get("rest")
+        row = ["%g" % res["h"], "%d" % res["nodes"], "%d" % res["n_free"], "%d, %.3f" % (t["steps"], tt["time"])]
         if b:
-            row.append("%.3f + %d%s, %.3f" % (res["bonded_time"], b["steps"], "" if b["converged"] else " NOT converged",
-                                               b["time"]))
-            row.append("%.2f (%.2f)" % (b["time"] / tl, (b["time"] + res["bonded_time"]) / tl))
+            row.append("%.3f + %d%s, %.3f" % (bs["time"], b["steps"], "" if b["converged"] else " NOT converged", b["time"]))
+            row.append("%.2f [%.2f]" % ((b["time"] + bs["time"]) / tt["time"], (b["cpu"] + bs["cpu"]) / tt["cpu"]))
         else:
             row += ["-", "-"]
         if z:
@@ -472,6 +498,7 @@ def print_table(results):
         else:
             row.append("-")
         row.append("%.0e, %.0e, %.0e, %d" % (b["reactions"], b["u"], b["r"], b["status_differ"]) if b else "-")
+        row.append(res["load"])
         print("| " + " | ".join(row) + " |")
 
 
@@ -507,7 +534,9 @@ def main():
     source.add_argument("--scene", help="the scene file to export")
     source.add_argument("--sizes", help="element sizes along the bondlines, mm (comma separated)")
     source.add_argument("--workdir", help="where to export (default: a temporary folder)")
-    parser.add_argument("--repeat", type=int, default=3, help="solves per start (and thinlayer's); the median is kept")
+    parser.add_argument("--repeat", type=int, default=3,
+                        help="rounds: each a thinlayer solve (with --sizes), GetFEM's bonded solve and a GetFEM solve "
+                             "from each start; medians are kept")
     parser.add_argument("--starts", default="rest,bonded", help="rest, bonded or both")
     parser.add_argument("--lsearch", default="simplest",
                         help="GetFEM's line search: simplest (the default here), basic, systematic, quadratic, or "
@@ -537,14 +566,20 @@ def main():
             parser.error("--sizes needs --exporter and --scene")
         for h in sizes:
             folder = os.path.join(options.workdir or scratch, "h_%g" % h)
-            command = [options.exporter, "--scene", options.scene, "--h", "%.17g" % h, "--out", folder,
-                       "--repeat", str(options.repeat)]
+            command = [options.exporter, "--scene", options.scene, "--h", "%.17g" % h, "--out", folder, "--repeat", "1"]
             print("$ " + " ".join(command) + "   (" + load() + ")", flush=True)
-            exported = subprocess.run(command)
-            if exported.returncode not in (0, 1):  # 1: thinlayer did not converge (still compared)
-                print("export failed at h = %g (exit %d)" % (h, exported.returncode))
+            if subprocess.run(command).returncode not in (0, 1):  # 1: thinlayer did not converge (still compared)
+                print("export failed at h = %g" % h)
                 return 2
-            res = peer(folder, options)
+
+            def thinlayer_sample(command=command[:-4] + ["--out", os.path.join(scratch, "timing"), "--repeat", "1"]):
+                """One more thinlayer solve of the same problem, in its own process (the same mesh)."""
+                subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+                with open(os.path.join(scratch, "timing", "thinlayer.json")) as f:
+                    t = json.load(f)
+                return t["solve_time_s"][0], t["call_cpu_s"][0]
+
+            res = peer(folder, options, thinlayer_sample)
             res["load"] = load()
             print_result(res)
             print("  (%s)" % res["load"], flush=True)
