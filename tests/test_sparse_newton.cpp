@@ -62,6 +62,37 @@ TEST(SparseNewton, AgreesWithTheCondensedPath) {
   EXPECT_LT(relative(newton.r, condensed.r), 1e-8);
 }
 
+TEST(SparseNewton, KeepsAHoldWhereUnequalPressuresBendTheJoint) {
+  // Clamping pressures of 85.7 and 43.9 MPa on the two outer strips (the generator's seed 2,
+  // scripts/random_friction_joints.py, f = 0.131, a pull of 84 N/mm): the stack bends, one face slides
+  // whole and the inner strip is held by a part of the other. Plain Newton on the statuses let every
+  // node slide from its third step on (the strip free along its faces: a singular step) and cycled;
+  // the hold and the backtracking (sparse_newton.cpp) bring it to the answer the condensed path finds.
+  SceneSpec spec = coarse_friction_lap(84.32);
+  for (SceneInterfaceSpec& i : spec.interfaces) i.friction = 0.131;
+  for (SceneLoadSpec& load : spec.loads)
+    if (load.group == "press_top") load.pressure = 85.72;
+    else if (load.group == "press_bottom") load.pressure = 43.86;
+  SceneFileBulk bulk(spec);
+  const ContactProblem problem(bulk.system(), bulk.limit_interfaces(0));
+  const SparseNewtonRun newton = solve_sparse_newton(problem, {});
+  EXPECT_TRUE(newton.report.converged) << newton.report.message;
+  EXPECT_FALSE(newton.cycled);
+  SolverOptions condensed_path;
+  condensed_path.sparse_newton = false;
+  const SolveReport condensed = solve_fast(problem, condensed_path);
+  ASSERT_TRUE(condensed.converged) << condensed.message;
+  EXPECT_LT(relative(newton.report.u, condensed.u), 1e-8);
+  EXPECT_LT(relative(newton.report.r, condensed.r), 1e-8);
+  // Some node of the inner strip sticks: below friction's capacity the strip keeps a hold.
+  int stuck = 0;
+  for (int k = 0; k < problem.num_nodes(); ++k) {
+    const double r_N = newton.report.r[2 * k], r_T = newton.report.r[2 * k + 1];
+    stuck += r_N < 0 && std::abs(r_T) < 0.999 * problem.law(k).friction * std::abs(r_N);
+  }
+  EXPECT_GT(stuck, 0);
+}
+
 TEST(SparseNewton, TakenOnlyWhereABodyIsHeldByContactAndNoLayerBand) {
   // Supported bodies (the dovetail's limit mode): the condensed active set, fast there.
   DovetailLimitBulk dovetail;

@@ -179,7 +179,8 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
 
 // A body held by contact and friction alone, and no layer band: the sparse Newton first
 // (core/solvers/sparse_newton.h); where it stops short, the condensed path from rest, its steps
-// added and its message saying so.
+// added and its message saying so. A Newton answer at its round-off floor (its residual, evaluated in
+// extended precision, within what its digits can resolve) is final: the condensed path ends there too.
 bool sparse_newton_first(const ContactProblem& problem, const SolverOptions& options) {
   return options.sparse_newton && takes_sparse_newton(problem) && options.friction_path.empty() && options.initial_r.size() == 0 &&
          options.initial_w.size() == 0;
@@ -208,7 +209,7 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
   if (every_interface_bonded(problem)) return solve_bonded(problem, options);  // linear: no status to search
   if (sparse_newton_first(problem, options)) {
     const SparseNewtonRun newton = solve_sparse_newton(problem, options);
-    if (newton.report.converged) return newton.report;
+    if (newton.report.converged || newton.report.stop_cause == StopCause::RoundOffFloor) return newton.report;
     return after_sparse_newton(newton, attempt(problem, condensed, options));
   }
   if (!options.friction_path.empty()) return solve_fast_along_friction_path(problem, condensed, options);
@@ -219,7 +220,7 @@ SolveReport solve_fast(const ContactProblem& problem, const SolverOptions& optio
   if (every_interface_bonded(problem)) return solve_bonded(problem, options);  // nothing to condense
   if (sparse_newton_first(problem, options)) {  // condensed only if it has to take over
     const SparseNewtonRun newton = solve_sparse_newton(problem, options);
-    if (newton.report.converged) return newton.report;
+    if (newton.report.converged || newton.report.stop_cause == StopCause::RoundOffFloor) return newton.report;
     const CondensedInterface condensed(problem);
     return after_sparse_newton(newton, attempt(problem, condensed, options));
   }

@@ -3,7 +3,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <array>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -41,6 +43,51 @@ Eigen::VectorXd jump_part(const ContactProblem& problem, const MixedSystem::Answ
   return d;
 }
 
+// The floating body each node's sides belong to (-1: none, or a supported body).
+std::vector<std::array<int, 2>> floating_sides(const ContactProblem& problem) {
+  const LinearSystem& system = problem.system();
+  auto floating_body = [&](int global_dof) {
+    if (global_dof < 0) return -1;
+    const int i = system.free_index(global_dof);
+    return i >= 0 && system.floating(i) ? system.body_of(i) : -1;
+  };
+  std::vector<std::array<int, 2>> sides(problem.num_nodes());
+  for (int k = 0; k < problem.num_nodes(); ++k)
+    sides[k] = {floating_body(problem.node(k).plus_dof_x), floating_body(problem.node(k).minus_dof_x)};
+  return sides;
+}
+
+bool holds(Active a) { return a == Active::Stick || a == Active::Bonded; }
+bool slides(Active a) { return a == Active::SlidePositive || a == Active::SlideNegative; }
+
+// A body held by friction alone, below what friction can hold (load_path.h refuses a load above
+// f x its normal force before the solve), keeps at least one stuck node at its solution: were every
+// node of its faces sliding, its friction forces f|r_N| would balance its load exactly — the
+// capacity. A guess that lets every node of such a body slide is therefore wrong, and it leaves the
+// body's translation along its faces free (a singular step: the Newton iterates of a double lap with
+// unequal clamping pressures fell there and cycled). Such a guess keeps stuck, on that body, the
+// sliding node whose natural map is least sure of the slide: the smallest |t_T| / (f |t_N|), t = r − κ d.
+void keep_a_hold(const ContactProblem& problem, const Condensed& rules, const std::vector<std::array<int, 2>>& sides,
+                 const Eigen::VectorXd& r, const Eigen::VectorXd& d, std::vector<Active>& next) {
+  std::map<int, bool> held;
+  for (int k = 0; k < problem.num_nodes(); ++k)
+    for (int b : sides[k])
+      if (b >= 0) held[b] = held[b] || holds(next[k]);
+  for (const auto& [body, is_held] : held) {
+    if (is_held) continue;
+    int keep = -1;
+    double least = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < problem.num_nodes(); ++k) {
+      if ((sides[k][0] != body && sides[k][1] != body) || !slides(next[k])) continue;
+      const double t_N = r[2 * k] - rules.kappa[2 * k] * d[2 * k];
+      const double t_T = r[2 * k + 1] - rules.kappa[2 * k + 1] * d[2 * k + 1];
+      const double excess = std::abs(t_T) / (problem.law(k).friction * std::abs(t_N));
+      if (excess < least) least = excess, keep = k;
+    }
+    if (keep >= 0) next[keep] = Active::Stick;
+  }
+}
+
 StopCause stop_cause(const SparseNewtonRun& run, bool capped) {
   const SolveReport& r = run.report;
   if (!std::isfinite(r.residual.value())) return run.singular ? StopCause::Singular : StopCause::NonFinite;
@@ -67,8 +114,18 @@ SparseNewtonRun solve_sparse_newton(const ContactProblem& problem, const SolverO
   // decides only where a row both carries a force and opens or slips the wrong way; the statuses
   // of an exact Newton step have r = 0 or d = 0 on each row.
   const Condensed rules = law_rules(problem, mixed.row_stiffness());
+  const std::vector<std::array<int, 2>> sides = floating_sides(problem);
   std::vector<Active> statuses = seed.empty() ? stuck_statuses(problem) : std::move(seed);
   std::set<std::vector<Active>> seen{statuses};
+  // The iterate the statuses are guessed from: each step's answer, or — where that answer's residual
+  // is larger than the iterate's — the first point towards it, x + α (answer − x), α = 1/2, 1/4, …,
+  // whose residual is smaller (a backtracking on the SPEC residual, Armijo's sufficient decrease with
+  // the customary 1e-4). Both ends are equilibria of the bodies (K u = F + Bᵀ r is linear), so every
+  // point between is one too: the backtracking moves only the interface's natural map. Plain Newton
+  // on the statuses cycles where a whole face slides and the body's hold moves to the other face
+  // (pressures unequal on its two faces); GetFEM's generalized Newton fails on the same scenes.
+  Eigen::VectorXd x_u, x_r;
+  double x_residual = std::numeric_limits<double>::infinity();
   int steps = 0;
   for (; steps < max_steps; ++steps) {
     const MixedSystem::Answer a = mixed.solve(statuses);
@@ -89,16 +146,53 @@ SparseNewtonRun solve_sparse_newton(const ContactProblem& problem, const SolverO
       ++steps;
       break;
     }
-    std::vector<Active> next = guess_statuses(rules, a.r, jump_part(problem, a));
-    if (next == statuses) {  // the statuses' own answer, and still above the tolerance
+    bool full_step = true;
+    if (residual.value() < x_residual || x_u.size() == 0) {
+      x_u = a.u, x_r = a.r, x_residual = residual.value();
+    } else {
+      full_step = false;
+      double alpha = 0.5;
+      for (; alpha >= 1.0 / 64; alpha /= 2) {
+        const Eigen::VectorXd u = x_u + alpha * (a.u - x_u), r = x_r + alpha * (a.r - x_r);
+        const double value = contact_residual(problem, u, r, {}).value();
+        if (value <= (1 - 1e-4 * alpha) * x_residual) {
+          x_u = u, x_r = r, x_residual = value;
+          break;
+        }
+      }
+      if (alpha < 1.0 / 64) x_u = a.u, x_r = a.r, x_residual = residual.value();  // no decrease: take the step
+      if (options.verbose) std::fprintf(stderr, "  sparse Newton: damped to %.3e\n", x_residual);
+    }
+    MixedSystem::Answer x = a;
+    x.u = x_u, x.r = x_r;
+    const Eigen::VectorXd x_d = jump_part(problem, x);
+    std::vector<Active> next = guess_statuses(rules, x_r, x_d);
+    keep_a_hold(problem, rules, sides, x_r, x_d, next);
+    if (!full_step && next == statuses) {
+      // The damped point asks for the statuses just solved: their answer is a, so the next guess is a's.
+      const Eigen::VectorXd a_d = jump_part(problem, a);
+      next = guess_statuses(rules, a.r, a_d);
+      keep_a_hold(problem, rules, sides, a.r, a_d, next);
+      x_u = a.u, x_r = a.r, x_residual = residual.value();
+      full_step = true;
+    }
+    if (next == statuses && full_step) {  // the statuses' own answer, and still above the tolerance
       run.settled = true;
       ++steps;
       break;
     }
-    if (!seen.insert(next).second) {
+    if (!seen.insert(next).second && full_step) {
       run.cycled = true;
       ++steps;
       break;
+    }
+    if (options.verbose) {
+      int changed = 0, gap = 0, stick = 0, slide = 0;
+      for (std::size_t k = 0; k < next.size(); ++k) {
+        changed += next[k] != statuses[k];
+        gap += next[k] == Active::Gap, stick += holds(next[k]), slide += slides(next[k]);
+      }
+      std::fprintf(stderr, "  sparse Newton: %d statuses change (next: gap %d, stick %d, slide %d)\n", changed, gap, stick, slide);
     }
     statuses = std::move(next);
   }
