@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/linalg/factor_memory.h"
 #include "core/solvers/bonded_solve.h"
 #include "core/solvers/mixed_system.h"
 
@@ -109,6 +110,7 @@ SparseNewtonRun solve_sparse_newton(const ContactProblem& problem, const SolverO
   best.method = "sparse Newton";
   best.tolerance = options.tolerance;
   best.residual.interface = best.residual.bulk = std::numeric_limits<double>::infinity();
+  const FactorsFromTheHeap reuse_factor_pages;  // one factorisation a step, on one pattern
   MixedSystem mixed(problem);
   // κ_i: the row's stiffness with everything else held (MixedSystem::row_stiffness). Its size
   // decides only where a row both carries a force and opens or slips the wrong way; the statuses
