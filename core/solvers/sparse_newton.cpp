@@ -68,6 +68,9 @@ bool slides(Active a) { return a == Active::SlidePositive || a == Active::SlideN
 // body's translation along its faces free (a singular step: the Newton iterates of a double lap with
 // unequal clamping pressures fell there and cycled). Such a guess keeps stuck, on that body, the
 // sliding node whose natural map is least sure of the slide: the smallest |t_T| / (f |t_N|), t = r − κ d.
+// The argument takes the faces along the load (a lap); a body wedged between inclined faces may slide
+// on all of them below that capacity, and then the rule keeps the Newton from its answer: it stops
+// short and the condensed path, which has no such rule, takes over.
 void keep_a_hold(const ContactProblem& problem, const Condensed& rules, const std::vector<std::array<int, 2>>& sides,
                  const Eigen::VectorXd& r, const Eigen::VectorXd& d, std::vector<Active>& next) {
   std::map<int, bool> held;
