@@ -15,33 +15,6 @@ namespace thinlayer {
 
 namespace {
 
-// The law's flags per row, and κ: what guess_statuses reads (its W is not needed).
-Condensed status_rules(const ContactProblem& problem, const Eigen::VectorXd& kappa) {
-  Condensed c;
-  c.kappa = kappa;
-  for (int k = 0; k < problem.num_nodes(); ++k) {
-    const InterfaceLaw& law = problem.law(k);
-    c.normal.push_back(law.normal_active());
-    c.bilateral.push_back(law.bilateral);
-    if (law.bilateral) {
-      c.tangential.push_back(law.K_T() > 0);
-      c.friction.push_back(0.0);
-    } else {
-      c.tangential.push_back(law.normal_active() && law.tangential_active());
-      c.friction.push_back(law.tangential_active() ? law.friction : 0.0);
-    }
-  }
-  return c;
-}
-
-// d = B u + g_D + C r.
-Eigen::VectorXd jump_part(const ContactProblem& problem, const MixedSystem::Answer& a) {
-  Eigen::VectorXd d = problem.jumps(a.u);
-  for (int i = 0; i < d.size(); ++i)
-    if (std::isfinite(problem.compliance()[i])) d[i] += problem.compliance()[i] * a.r[i];
-  return d;
-}
-
 double largest_nodal_force(const Eigen::VectorXd& r) {
   double m = 0;
   for (int k = 0; 2 * k < r.size(); ++k) m = std::max(m, r.segment<2>(2 * k).norm());
@@ -108,7 +81,7 @@ OuterNewtonRun solve_outer_newton(const ContactProblem& problem, const std::vect
   const Eigen::VectorXd rho_y = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(y.size()), stage * kappa_adherent);
   if (!y.empty()) mixed.set_springs(y, rho_y, anchor);
   run.settled = run.cycled = false;
-  const Condensed rules = status_rules(problem, mixed.row_stiffness());
+  const Condensed rules = law_rules(problem, mixed.row_stiffness());
   const Eigen::VectorXd freeze_kappa = options.freeze_measure == 0   ? Eigen::VectorXd::Zero(rules.kappa.size())
                                        : options.freeze_measure == 1 ? problem.kappa()
                                                                      : rules.kappa;
@@ -122,14 +95,14 @@ OuterNewtonRun solve_outer_newton(const ContactProblem& problem, const std::vect
     consider(a, statuses, true);
     follow(a);
     if (!y.empty()) mixed.set_springs(y, rho_y, anchor);
-    std::vector<Active> next = guess_statuses(rules, a.r, jump_part(problem, a));
+    std::vector<Active> next = guess_statuses(rules, a.r, problem.stop_jumps(a.u, a.r));
     int frozen = 0;
     for (size_t k = 0; k < options.held.size(); ++k)
       if (options.held[k]) next[k] = statuses[k];
     if (step >= options.freeze_from_step) {
       // A row's force: the one it carries, or the one its jump would make at the residual's κ
       // (a gap row that penetrates is not film-scale however small its r).
-      const Eigen::VectorXd d = jump_part(problem, a);
+      const Eigen::VectorXd d = problem.stop_jumps(a.u, a.r);
       const double floor = options.freeze_below * largest_nodal_force(a.r);
       for (int k = 0; k < problem.num_nodes(); ++k)
         if (a.r.segment<2>(2 * k).norm() + freeze_kappa.segment<2>(2 * k).cwiseProduct(d.segment<2>(2 * k)).norm() <
@@ -143,7 +116,7 @@ OuterNewtonRun solve_outer_newton(const ContactProblem& problem, const std::vect
       int changed = 0, counts[6] = {0, 0, 0, 0, 0, 0};
       const double peak = largest_nodal_force(a.r);
       double tension = 0, penetration = 0;
-      const Eigen::VectorXd d = jump_part(problem, a);
+      const Eigen::VectorXd d = problem.stop_jumps(a.u, a.r);
       for (int k = 0; k < problem.num_nodes(); ++k) {
         changed += next[k] != statuses[k];
         ++counts[static_cast<int>(statuses[k])];
@@ -172,7 +145,7 @@ OuterNewtonRun solve_outer_newton(const ContactProblem& problem, const std::vect
   //    film_inner, the film's statuses before each of them from the film alone (film_solver.h).
   MixedSystem::Answer last = mixed.solve(statuses);  // with the spring: the film's frozen surroundings
   mixed.clear_springs();
-  const Condensed exact_rules = status_rules(problem, mixed.row_stiffness());
+  const Condensed exact_rules = law_rules(problem, mixed.row_stiffness());
   std::set<std::vector<Active>> tried;
   for (int step = 0; step <= options.polish_steps; ++step) {
     if (options.film_inner) {
@@ -189,7 +162,7 @@ OuterNewtonRun solve_outer_newton(const ContactProblem& problem, const std::vect
     const MixedSystem::Answer a = mixed.solve(statuses);
     consider(a, statuses, false);
     if (options.verbose) {  // where the spring-free answer breaks its law
-      const Eigen::VectorXd d = jump_part(problem, a);
+      const Eigen::VectorXd d = problem.stop_jumps(a.u, a.r);
       const double peak = largest_nodal_force(a.r);
       double film_map = 0, load_map = 0;
       int worst = -1;
@@ -214,7 +187,7 @@ OuterNewtonRun solve_outer_newton(const ContactProblem& problem, const std::vect
       std::fprintf(stderr, "\n");
     }
     if (best.residual.value() <= solver.tolerance) break;
-    statuses = guess_statuses(exact_rules, a.r, jump_part(problem, a));
+    statuses = guess_statuses(exact_rules, a.r, problem.stop_jumps(a.u, a.r));
     last = a;
   }
 

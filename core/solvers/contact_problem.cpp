@@ -25,6 +25,13 @@ double nodal_stiffness(const LinearSystem& system, int global_dof_x, const Eigen
 
 }  // namespace
 
+Eigen::VectorXd ContactProblem::stop_jumps(const Eigen::VectorXd& u_free, const Eigen::VectorXd& r) const {
+  Eigen::VectorXd d = jumps(u_free);
+  for (int i = 0; i < d.size(); ++i)
+    if (std::isfinite(C_[i])) d[i] += C_[i] * r[i];
+  return d;
+}
+
 ContactProblem::ContactProblem(const LinearSystem& system, std::vector<Interface> interfaces)
     : system_(&system), interfaces_(std::move(interfaces)) {
   for (int i = 0; i < static_cast<int>(interfaces_.size()); ++i)

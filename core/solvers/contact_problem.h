@@ -43,6 +43,9 @@ class ContactProblem {
   const Eigen::VectorXd& kappa() const { return kappa_; }
 
   Eigen::VectorXd jumps(const Eigen::VectorXd& u_free) const { return B_ * u_free + g_D_; }
+  // d = B u + g_D + C r (mm): the part of the jump the stop and the skidding block take, what the
+  // natural map's status guess reads (C r only where the spring is finite: a rigid law's C is +inf).
+  Eigen::VectorXd stop_jumps(const Eigen::VectorXd& u_free, const Eigen::VectorXd& r) const;
 
  private:
   const LinearSystem* system_;

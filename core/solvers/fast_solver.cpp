@@ -27,14 +27,6 @@ namespace {
 // all (measured on the scene set and the generator's seeds: README, "The solvers").
 constexpr int exact_steps_cap = 5;
 
-// d = g + C r of an answer, per interface row (the jumps the status guess reads).
-Eigen::VectorXd jump_part(const ContactProblem& problem, const MixedSystem::Answer& answer) {
-  Eigen::VectorXd d = problem.jumps(answer.u);
-  for (int i = 0; i < d.size(); ++i)
-    if (std::isfinite(problem.compliance()[i])) d[i] += problem.compliance()[i] * answer.r[i];
-  return d;
-}
-
 StopCause stop_cause(const Condensed& c, const std::vector<Active>& statuses, const ActiveSetRun& run,
                      const SolveReport& report, bool cap_reached, bool adrift) {
   if (!report.u.allFinite() || !report.r.allFinite() || !std::isfinite(report.residual.value()))
@@ -151,7 +143,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
         exact = step + 1;
       }
       if (report.residual.value() <= options.tolerance) break;
-      s = guess_statuses(c, answer.r, jump_part(problem, answer));
+      s = guess_statuses(c, answer.r, problem.stop_jumps(answer.u, answer.r));
     }
   }
   report.converged = report.residual.value() <= options.tolerance;

@@ -36,14 +36,6 @@ std::vector<Active> stuck_statuses(const ContactProblem& problem) {
 
 namespace {
 
-// d = B u + g_D + C r of an answer.
-Eigen::VectorXd jump_part(const ContactProblem& problem, const MixedSystem::Answer& a) {
-  Eigen::VectorXd d = problem.jumps(a.u);
-  for (int i = 0; i < d.size(); ++i)
-    if (std::isfinite(problem.compliance()[i])) d[i] += problem.compliance()[i] * a.r[i];
-  return d;
-}
-
 // The floating body each node's sides belong to (-1: none, or a supported body).
 std::vector<std::array<int, 2>> floating_sides(const ContactProblem& problem) {
   const LinearSystem& system = problem.system();
@@ -120,6 +112,13 @@ SparseNewtonRun solve_sparse_newton(const ContactProblem& problem, const SolverO
   // of an exact Newton step have r = 0 or d = 0 on each row.
   const Condensed rules = law_rules(problem, mixed.row_stiffness());
   const std::vector<std::array<int, 2>> sides = floating_sides(problem);
+  // The statuses the natural map reads at (u, r), a friction-held body keeping a hold.
+  auto guess_at = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& r) {
+    const Eigen::VectorXd d = problem.stop_jumps(u, r);
+    std::vector<Active> next = guess_statuses(rules, r, d);
+    keep_a_hold(problem, rules, sides, r, d, next);
+    return next;
+  };
   std::vector<Active> statuses = seed.empty() ? stuck_statuses(problem) : std::move(seed);
   std::set<std::vector<Active>> seen{statuses};
   // The iterate the statuses are guessed from: each step's answer, or — where that answer's residual
@@ -168,17 +167,11 @@ SparseNewtonRun solve_sparse_newton(const ContactProblem& problem, const SolverO
       if (alpha < 1.0 / 64) x_u = a.u, x_r = a.r, x_residual = residual.value();  // no decrease: take the step
       if (options.verbose) std::fprintf(stderr, "  sparse Newton: damped to %.3e\n", x_residual);
     }
-    MixedSystem::Answer x = a;
-    x.u = x_u, x.r = x_r;
-    const Eigen::VectorXd x_d = jump_part(problem, x);
-    std::vector<Active> next = guess_statuses(rules, x_r, x_d);
-    keep_a_hold(problem, rules, sides, x_r, x_d, next);
+    std::vector<Active> next = guess_at(x_u, x_r);
     if (!full_step && next == statuses) {
       // The damped point asks for the statuses just solved: their answer is a, so the next guess is a's.
-      const Eigen::VectorXd a_d = jump_part(problem, a);
-      next = guess_statuses(rules, a.r, a_d);
-      keep_a_hold(problem, rules, sides, a.r, a_d, next);
       x_u = a.u, x_r = a.r, x_residual = residual.value();
+      next = guess_at(x_u, x_r);
       full_step = true;
     }
     if (next == statuses && full_step) {  // the statuses' own answer, and still above the tolerance
