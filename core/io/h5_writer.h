@@ -87,6 +87,14 @@ class H5Writer {
   void dataset(const std::string& path, const std::vector<double>& values);
   void dataset(const std::string& path, const std::vector<int>& values);
   void dataset(const std::string& path, const std::vector<std::string>& values);
+  // A 1-D dataset with its units ("" for none) and what it holds: how the studies describe a column.
+  template <typename T>
+  void described_dataset(const std::string& path, const std::vector<T>& values, const std::string& units,
+                         const std::string& description) {
+    dataset(path, values);
+    if (!units.empty()) attr(path, "units", units);
+    attr(path, "description", description);
+  }
 
  private:
   void attr_int64(const std::string& object_path, const std::string& name, long long value);

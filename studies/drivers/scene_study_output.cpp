@@ -26,14 +26,6 @@ const std::map<std::string, std::string>& quantity_descriptions() {
   return d;
 }
 
-template <typename T>
-void put(H5Writer& out, const std::string& path, const std::vector<T>& values, const std::string& units,
-         const std::string& description) {
-  out.dataset(path, values);
-  if (!units.empty()) out.attr(path, "units", units);
-  out.attr(path, "description", description);
-}
-
 std::string verdict_text(const SceneValidityRow& v) {
   if (v.status == "at_least") return ">= " + sci(v.eps_max, 1);
   if (v.status == "below_range") return "< " + sci(v.eps_max, 1);
@@ -293,13 +285,13 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
     ids.push_back(s.id);
     limit_ids.push_back(s.limit_id);
   }
-  put(out, g + "/eps", eps, "mm", "the layer's thickness of each sample (every layer bondline alike)");
-  put(out, g + "/status_diff", diff, "", "nodes of S whose combined status differs from the limit mode's");
-  put(out, g + "/converged", converged, "", "1: the layer scene and its limit scene reached the tolerance");
-  put(out, g + "/layer_scene", ids, "", "the layer scene of each sample (/scenes/<id>)");
-  put(out, g + "/limit_scene", limit_ids, "", "the limit scene each sample is measured against (/scenes/<id>)");
+  out.described_dataset(g + "/eps", eps, "mm", "the layer's thickness of each sample (every layer bondline alike)");
+  out.described_dataset(g + "/status_diff", diff, "", "nodes of S whose combined status differs from the limit mode's");
+  out.described_dataset(g + "/converged", converged, "", "1: the layer scene and its limit scene reached the tolerance");
+  out.described_dataset(g + "/layer_scene", ids, "", "the layer scene of each sample (/scenes/<id>)");
+  out.described_dataset(g + "/limit_scene", limit_ids, "", "the limit scene each sample is measured against (/scenes/<id>)");
   for (const std::string& q : scene_distance_quantities()) {
-    put(out, g + "/e_" + q, column(r.samples, q), "1 (relative)", "relative discrete L2 distance of " + quantity_descriptions().at(q));
+    out.described_dataset(g + "/e_" + q, column(r.samples, q), "1 (relative)", "relative discrete L2 distance of " + quantity_descriptions().at(q));
     write_fits(out, g, q, r.fit.at(q), "p_");
     const auto& ff = r.floor_fit.at(q);
     out.attr(g, "p_floor_" + q, ff ? ff->p : 0.0);
@@ -320,7 +312,7 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
   for (const std::string& q : verdict_quantities()) {
     std::vector<double> v;
     for (const SceneSample& smp : r.samples) v.push_back(smp.verdict.at(q));
-    put(out, g + "/verdict_" + q, v, "1 (relative)",
+    out.described_dataset(g + "/verdict_" + q, v, "1 (relative)",
         "relative distance of the layer model to the limit law: " + verdict_label(q, r.peak_distance));
   }
   auto ends_column = [&](auto member, bool layer) {
@@ -330,13 +322,13 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
   };
   for (const bool layer : {true, false}) {
     const std::string mode = layer ? "layer" : "limit";
-    put(out, g + "/ends/" + mode + "_peel_at_d", ends_column(&EndStresses::peel, layer), stress,
+    out.described_dataset(g + "/ends/" + mode + "_peel_at_d", ends_column(&EndStresses::peel, layer), stress,
         "the largest sigma_N at d from either bondline end (worse face), " + mode + " mode");
-    put(out, g + "/ends/" + mode + "_shear_at_d", ends_column(&EndStresses::shear, layer), stress,
+    out.described_dataset(g + "/ends/" + mode + "_shear_at_d", ends_column(&EndStresses::shear, layer), stress,
         "the largest |sigma_T| at d from either bondline end (worse face), " + mode + " mode");
-    put(out, g + "/ends/" + mode + "_peel_corner", ends_column(&EndStresses::peel_end, layer), stress,
+    out.described_dataset(g + "/ends/" + mode + "_peel_corner", ends_column(&EndStresses::peel_end, layer), stress,
         "the largest sigma_N at the bondline ends' nodes (singular in the layer model), " + mode + " mode");
-    put(out, g + "/ends/" + mode + "_shear_corner", ends_column(&EndStresses::shear_end, layer), stress,
+    out.described_dataset(g + "/ends/" + mode + "_shear_corner", ends_column(&EndStresses::shear_end, layer), stress,
         "the largest |sigma_T| at the bondline ends' nodes (singular in the layer model), " + mode + " mode");
   }
   out.attr(g + "/ends", "description", "per sample (eps): the peaks at d from the bondline ends and at the corners, both modes");
@@ -346,10 +338,10 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
   out.attr(g, "nominal_sample", static_cast<int>(r.nominal));
 
   const std::string c = g + "/cauchy";
-  put(out, c + "/eps", std::vector<double>(eps.begin(), eps.end() - 1), "mm",
+  out.described_dataset(c + "/eps", std::vector<double>(eps.begin(), eps.end() - 1), "mm",
       "the thicker eps of each pair of neighbouring samples");
   for (const std::string& q : scene_distance_quantities()) {
-    put(out, c + "/d_" + q, r.cauchy.at(q), "1 (relative)",
+    out.described_dataset(c + "/d_" + q, r.cauchy.at(q), "1 (relative)",
         "distance between the layer model at eps and at the next (thinner) sample: " + quantity_descriptions().at(q));
     write_fits(out, c, q, r.cauchy_fit.at(q), "p_");
     const CauchyTail& tail = r.cauchy_tail.at(q);
@@ -357,7 +349,7 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
     out.attr(c, "p_tail_" + q + "_stderr", tail.fit ? tail.fit->p_stderr : 0.0);
     out.attr(c, "fitted_tail_" + q, tail.fit ? 1 : 0);
     out.attr(c, "settled_" + q, tail.settled ? 1 : 0);
-    put(out, c + "/local_slope_" + q, tail.local_slopes, "1",
+    out.described_dataset(c + "/local_slope_" + q, tail.local_slopes, "1",
         "the local rate between neighbouring differences of " + q + " (NaN where a difference is 0)");
   }
   out.attr(c, "tail_description",
@@ -377,16 +369,16 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
       layer_ids.push_back(row.layer_id);
       limit_ids_f.push_back(row.limit_id);
     }
-    put(out, f + "/h", h, "mm", "the element size along the bondlines (mesh_size.interface; far halved alike)");
-    put(out, f + "/eps", feps, "mm",
+    out.described_dataset(f + "/h", h, "mm", "the element size along the bondlines (mesh_size.interface; far halved alike)");
+    out.described_dataset(f + "/eps", feps, "mm",
         r.family == "engineer" ? "the layer's thickness: the glue's own (the joint as glued)"
                                : "the layer's thickness: the thinnest sample times floor_eps_factor");
-    put(out, f + "/S_nodes", nodes, "", "nodes on every bondline together");
-    put(out, f + "/converged", fconv, "", "1: both scenes reached the tolerance");
-    put(out, f + "/layer_scene", layer_ids, "", "the layer scene at h (/scenes/<id>)");
-    put(out, f + "/limit_scene", limit_ids_f, "", "the limit scene at h (/scenes/<id>)");
+    out.described_dataset(f + "/S_nodes", nodes, "", "nodes on every bondline together");
+    out.described_dataset(f + "/converged", fconv, "", "1: both scenes reached the tolerance");
+    out.described_dataset(f + "/layer_scene", layer_ids, "", "the layer scene at h (/scenes/<id>)");
+    out.described_dataset(f + "/limit_scene", limit_ids_f, "", "the limit scene at h (/scenes/<id>)");
     for (const std::string& q : scene_distance_quantities()) {
-      put(out, f + "/floor_" + q, column(r.floor, q), "1 (relative)", "the mesh floor: distance of " + quantity_descriptions().at(q));
+      out.described_dataset(f + "/floor_" + q, column(r.floor, q), "1 (relative)", "the mesh floor: distance of " + quantity_descriptions().at(q));
       write_fits(out, f, q, r.floor_rate.at(q), "rate_");
     }
     for (const bool layer : {true, false}) {
@@ -399,17 +391,17 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
         peel_corner.push_back(e.peel_end);
         shear_corner.push_back(e.shear_end);
       }
-      put(out, f + "/" + mode + "_peel_at_d", peel, stress, "the largest sigma_N at d from either end at h, " + mode + " mode");
-      put(out, f + "/" + mode + "_shear_at_d", shear, stress, "the largest |sigma_T| at d from either end at h, " + mode + " mode");
-      put(out, f + "/" + mode + "_peel_corner", peel_corner, stress,
+      out.described_dataset(f + "/" + mode + "_peel_at_d", peel, stress, "the largest sigma_N at d from either end at h, " + mode + " mode");
+      out.described_dataset(f + "/" + mode + "_shear_at_d", shear, stress, "the largest |sigma_T| at d from either end at h, " + mode + " mode");
+      out.described_dataset(f + "/" + mode + "_peel_corner", peel_corner, stress,
           "the largest sigma_N at the ends' nodes at h (the layer's grows: singular), " + mode + " mode");
-      put(out, f + "/" + mode + "_shear_corner", shear_corner, stress,
+      out.described_dataset(f + "/" + mode + "_shear_corner", shear_corner, stress,
           "the largest |sigma_T| at the ends' nodes at h (the layer's grows: singular), " + mode + " mode");
     }
     for (const std::string& q : verdict_quantities()) {
       std::vector<double> v;
       for (const SceneFloorRow& row : r.floor) v.push_back(row.verdict.at(q));
-      put(out, f + "/verdict_" + q, v, "1 (relative)", "at h: " + verdict_label(q, r.peak_distance));
+      out.described_dataset(f + "/verdict_" + q, v, "1 (relative)", "at h: " + verdict_label(q, r.peak_distance));
     }
     out.attr(f, "floor_eps_factor", o.floor_eps_factor);
     out.attr(f, "description", "the modes' distance far below the eps grid, at h, h/2, h/4: a mesh effect, not a modelling one");
@@ -431,16 +423,16 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
       s_shear.push_back(k.peaks.s_shear);
       compression.push_back(k.peaks.compression);
     }
-    put(out, p + "/scene", scene, "", "the scene (/scenes/<id>)");
-    put(out, p + "/mode", mode, "", "limit or layer");
-    put(out, p + "/bondline", bondline, "", "the bondline's group");
-    put(out, p + "/eps", peps, "mm", "the layer's thickness (0: limit mode)");
-    put(out, p + "/h", ph, "mm", "the element size along the bondlines (mesh_size.interface)");
-    put(out, p + "/peel", peel, stress, "the largest tension sigma_N > 0 on the plus adherent's face (0 if none)");
-    put(out, p + "/s_peel", s_peel, "mm", "where: arc length along the bondline");
-    put(out, p + "/shear", shear, stress, "the largest |sigma_T| on the plus adherent's face");
-    put(out, p + "/s_shear", s_shear, "mm", "where: arc length along the bondline");
-    put(out, p + "/compression", compression, stress, "the largest compression -sigma_N > 0 (0 if none)");
+    out.described_dataset(p + "/scene", scene, "", "the scene (/scenes/<id>)");
+    out.described_dataset(p + "/mode", mode, "", "limit or layer");
+    out.described_dataset(p + "/bondline", bondline, "", "the bondline's group");
+    out.described_dataset(p + "/eps", peps, "mm", "the layer's thickness (0: limit mode)");
+    out.described_dataset(p + "/h", ph, "mm", "the element size along the bondlines (mesh_size.interface)");
+    out.described_dataset(p + "/peel", peel, stress, "the largest tension sigma_N > 0 on the plus adherent's face (0 if none)");
+    out.described_dataset(p + "/s_peel", s_peel, "mm", "where: arc length along the bondline");
+    out.described_dataset(p + "/shear", shear, stress, "the largest |sigma_T| on the plus adherent's face");
+    out.described_dataset(p + "/s_shear", s_shear, "mm", "where: arc length along the bondline");
+    out.described_dataset(p + "/compression", compression, stress, "the largest compression -sigma_N > 0 (0 if none)");
   }
 
   if (!r.validity.empty()) {
@@ -458,16 +450,16 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
       steps.push_back(row.bisection_steps);
       vconv.push_back(row.converged ? 1 : 0);
     }
-    put(out, v + "/quantity", quantity, "", "the quantity judged: reactions, u (the adherents' displacements), "
+    out.described_dataset(v + "/quantity", quantity, "", "the quantity judged: reactions, u (the adherents' displacements), "
                                                "peel_at_d, shear_at_d (the peaks at peak_distance from the ends)");
-    put(out, v + "/tau", tau, "1 (relative)", "the tolerance on the quantity's distance");
-    put(out, v + "/status", status, "", "found: by bisection; at_least: within tau at every sample (a lower bound); "
+    out.described_dataset(v + "/tau", tau, "1 (relative)", "the tolerance on the quantity's distance");
+    out.described_dataset(v + "/status", status, "", "found: by bisection; at_least: within tau at every sample (a lower bound); "
                                           "below_range: not within tau even at the thinnest sample");
-    put(out, v + "/eps_max", eps_max, "mm", "the largest eps at which the limit law stays within tau (the quantity)");
-    put(out, v + "/error_at_eps_max", error, "1 (relative)", "the quantity's distance at eps_max");
-    put(out, v + "/eps_beyond", beyond, "mm", "the smallest eps known beyond tau (status found)");
-    put(out, v + "/bisection_steps", steps, "", "bisection steps on log eps");
-    put(out, v + "/converged", vconv, "", "1: every scene behind the verdict reached the tolerance");
+    out.described_dataset(v + "/eps_max", eps_max, "mm", "the largest eps at which the limit law stays within tau (the quantity)");
+    out.described_dataset(v + "/error_at_eps_max", error, "1 (relative)", "the quantity's distance at eps_max");
+    out.described_dataset(v + "/eps_beyond", beyond, "mm", "the smallest eps known beyond tau (status found)");
+    out.described_dataset(v + "/bisection_steps", steps, "", "bisection steps on log eps");
+    out.described_dataset(v + "/converged", vconv, "", "1: every scene behind the verdict reached the tolerance");
     if (!r.floor.empty()) {
       out.attr(v, "mesh_floor_u", r.floor.front().e.at("u"));
       out.attr(v, "mesh_floor_u_finest", r.floor.back().e.at("u"));

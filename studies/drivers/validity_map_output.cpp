@@ -25,14 +25,6 @@ const std::map<std::string, std::string>& descriptions() {
   return d;
 }
 
-template <typename T>
-void put(H5Writer& out, const std::string& path, const std::vector<T>& values, const std::string& units,
-         const std::string& description) {
-  out.dataset(path, values);
-  if (!units.empty()) out.attr(path, "units", units);
-  out.attr(path, "description", description);
-}
-
 // The marker of a cell in the printed grids: the measured distance in %, "~" after it where the mesh
 // does not resolve it, "x" where the cell did not converge.
 std::string entry(const MapCell& c, const std::string& q, double factor) {
@@ -150,22 +142,22 @@ void write_validity_map(H5Writer& out, const ValidityMapResult& r, const Validit
     limit_time.push_back(c.coarse.limit_time_s + c.fine.limit_time_s);
     estimate_time.push_back(c.coarse.estimate_time_s + c.fine.estimate_time_s);
   }
-  put(out, g + "/t_over_L", t, "1", "the glue's thickness over L (SPEC 1.3's characteristic length)");
-  put(out, g + "/E_ratio", E, "1", "the glue's Young's modulus over the adherents' E_a");
-  put(out, g + "/nu", nu, "1", "the glue's Poisson ratio");
-  put(out, g + "/thickness", thickness, "mm", "the glue's thickness t of the cell");
-  put(out, g + "/E_g", Eg, "stress unit of the scene", "the glue's Young's modulus of the cell");
+  out.described_dataset(g + "/t_over_L", t, "1", "the glue's thickness over L (SPEC 1.3's characteristic length)");
+  out.described_dataset(g + "/E_ratio", E, "1", "the glue's Young's modulus over the adherents' E_a");
+  out.described_dataset(g + "/nu", nu, "1", "the glue's Poisson ratio");
+  out.described_dataset(g + "/thickness", thickness, "mm", "the glue's thickness t of the cell");
+  out.described_dataset(g + "/E_g", Eg, "stress unit of the scene", "the glue's Young's modulus of the cell");
   std::vector<double> shear_lag;
   for (const MapCell& c : r.cells) shear_lag.push_back(c.shear_lag);
-  put(out, g + "/shear_lag", shear_lag, "mm", "the joint's shear-lag length sqrt(E*_a L t / mu_g)");
-  put(out, g + "/converged", converged, "", "1: the layer and the finite law reached the tolerance at h and h/2");
-  put(out, g + "/failure", failure, "", "a scene that could not be solved (refused, threw), or empty");
-  put(out, g + "/law_case", law, "", "the finite law's Table 1 class, per bondline");
-  put(out, g + "/rule_case", rule, "", "the paper's 3 % / 30x rule's choice, per bondline (SPEC 1.3)");
-  put(out, g + "/rule_solved", rule_solved, "", "1: the rule picks another law than the finite one; rule_<q> is its distance");
-  put(out, g + "/layer_time_s", layer_time, "s", "the layer scenes' wall time (both levels)");
-  put(out, g + "/limit_time_s", limit_time, "s", "the finite law's limit scenes' wall time (both levels)");
-  put(out, g + "/estimate_time_s", estimate_time, "s", "SPEC 3 S6's estimate's wall time (both levels)");
+  out.described_dataset(g + "/shear_lag", shear_lag, "mm", "the joint's shear-lag length sqrt(E*_a L t / mu_g)");
+  out.described_dataset(g + "/converged", converged, "", "1: the layer and the finite law reached the tolerance at h and h/2");
+  out.described_dataset(g + "/failure", failure, "", "a scene that could not be solved (refused, threw), or empty");
+  out.described_dataset(g + "/law_case", law, "", "the finite law's Table 1 class, per bondline");
+  out.described_dataset(g + "/rule_case", rule, "", "the paper's 3 % / 30x rule's choice, per bondline (SPEC 1.3)");
+  out.described_dataset(g + "/rule_solved", rule_solved, "", "1: the rule picks another law than the finite one; rule_<q> is its distance");
+  out.described_dataset(g + "/layer_time_s", layer_time, "s", "the layer scenes' wall time (both levels)");
+  out.described_dataset(g + "/limit_time_s", limit_time, "s", "the finite law's limit scenes' wall time (both levels)");
+  out.described_dataset(g + "/estimate_time_s", estimate_time, "s", "SPEC 3 S6's estimate's wall time (both levels)");
   for (const std::string& q : map_quantities()) {
     std::vector<double> measured, measured_h, estimate, interior, floor, rule_q;
     std::vector<int> resolved, within, ends;
@@ -182,16 +174,16 @@ void write_validity_map(H5Writer& out, const ValidityMapResult& r, const Validit
       rule_q.push_back(c.rule_solved && c.rule_measured.count(q) ? c.rule_measured.at(q) : -1.0);
     }
     const std::string d = descriptions().at(q);
-    put(out, g + "/measured_" + q, measured, "1 (relative)", "the finite law against the layer at h/2: " + d);
-    put(out, g + "/measured_h_" + q, measured_h, "1 (relative)", "the same at h: " + d);
-    put(out, g + "/estimate_" + q, estimate, "1 (relative)", "SPEC 3 S6's estimate from the limit mode alone, at h/2: " + d);
-    put(out, g + "/interior_" + q, interior, "1 (relative)", "the same estimate without its end cells, at h/2: " + d);
-    put(out, g + "/ends_resolved_" + q, ends, "", "1: h/2 <= 3t, the mesh resolves the layer's end zone: estimate_<q> is judged, else interior_<q>");
-    put(out, g + "/floor_" + q, floor, "1 (relative)", "the mesh floor, |measured at h - measured at h/2|: " + d);
-    put(out, g + "/resolved_" + q, resolved, "",
+    out.described_dataset(g + "/measured_" + q, measured, "1 (relative)", "the finite law against the layer at h/2: " + d);
+    out.described_dataset(g + "/measured_h_" + q, measured_h, "1 (relative)", "the same at h: " + d);
+    out.described_dataset(g + "/estimate_" + q, estimate, "1 (relative)", "SPEC 3 S6's estimate from the limit mode alone, at h/2: " + d);
+    out.described_dataset(g + "/interior_" + q, interior, "1 (relative)", "the same estimate without its end cells, at h/2: " + d);
+    out.described_dataset(g + "/ends_resolved_" + q, ends, "", "1: h/2 <= 3t, the mesh resolves the layer's end zone: estimate_<q> is judged, else interior_<q>");
+    out.described_dataset(g + "/floor_" + q, floor, "1 (relative)", "the mesh floor, |measured at h - measured at h/2|: " + d);
+    out.described_dataset(g + "/resolved_" + q, resolved, "",
         "1: above the mesh floor: measured > 2 floor (the mesh moves it by less than half) and 4 elements over the shear-lag length");
-    put(out, g + "/within_" + q, within, "", "1: the judged estimate (estimate_ or interior_) within the factor of the measured distance");
-    put(out, g + "/rule_" + q, rule_q, "1 (relative)", "the paper's rule's law against the layer at h/2 (-1: it picks the finite law): " + d);
+    out.described_dataset(g + "/within_" + q, within, "", "1: the judged estimate (estimate_ or interior_) within the factor of the measured distance");
+    out.described_dataset(g + "/rule_" + q, rule_q, "1 (relative)", "the paper's rule's law against the layer at h/2 (-1: it picks the finite law): " + d);
   }
   out.attr(g, "description", std::string("SPEC 3 S3, the engineer's validity map: one row per cell (nu outermost, then "
                                          "E_ratio, then t_over_L); studies/drivers/validity_map.h"));
