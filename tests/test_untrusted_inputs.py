@@ -40,7 +40,7 @@ OUTSIDE = tempfile.mkdtemp(prefix="thinlayer-outside-")  # where a hostile scrip
 TMP = tempfile.mkdtemp(prefix="thinlayer-tmpdir-")      # the runs' $TMPDIR: the staging folders go there
 ENV = dict(os.environ, TMPDIR=TMP)
 # Under an address-space limit (the memory cases), one BLAS and one OpenMP thread: OpenBLAS spins
-# for ever on an allocation that fails (README, "The box"); it is no part of what is tested here.
+# for ever on an allocation that fails (docs/security.md, "The box"); it is no part of what is tested here.
 LIMITED_ENV = dict(ENV, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
 
 

@@ -9,7 +9,7 @@
 // Where the kernel has no Landlock (older, or built without it), nothing is restricted here:
 // gmsh is then handed only paths inside the staging folder and its working directory is that
 // folder, and the seccomp filter of core/mesh/meshing_child.h still denies writes and exec;
-// a read of another path that the .geo scan missed would succeed (README, "The box").
+// a read of another path that the .geo scan missed would succeed (docs/security.md, "The box").
 #include <string>
 
 namespace thinlayer {

@@ -24,7 +24,7 @@ namespace {
 
 // The semismooth Newton steps on the whole system that follow the condensed solve (at most): from
 // statuses settled with the selection spring they converge in one to three where they converge at
-// all (measured on the scene set and the generator's seeds: README, "The solvers").
+// all (measured on the scene set and the generator's seeds: docs/solvers.md).
 constexpr int exact_steps_cap = 5;
 
 StopCause stop_cause(const Condensed& c, const std::vector<Active>& statuses, const ActiveSetRun& run,

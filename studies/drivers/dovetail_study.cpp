@@ -22,7 +22,7 @@ int status_differences(const SceneRecord& layer, const SceneRecord& limit) {
 }
 
 // Cost estimates for spreading the scenes over ranks (seconds, measured on the development
-// machine; README, "Studies over MPI ranks"): a layer scene takes ~100 times a limit one; the
+// machine; docs/studies.md, "Studies over MPI ranks"): a layer scene takes ~100 times a limit one; the
 // relaxation grows with its cap.
 constexpr double limit_cost = 0.05;
 constexpr double layer_cost = 5.0;

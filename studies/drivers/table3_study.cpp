@@ -132,7 +132,7 @@ void get(ByteReader& r, SensitivityRow& s) {
 }
 
 // Cost estimates for spreading the scenes over ranks, in seconds on the 2-core development
-// machine (measured with THINLAYER_SCENE_TIMES; README, "Studies over MPI ranks"). A task of
+// machine (measured with THINLAYER_SCENE_TIMES; docs/studies.md, "Studies over MPI ranks"). A task of
 // limit solves on one mesh costs about its factorisation, ~2e-5 s per node (the sensitivity
 // variants' 30 solves: 0.02-0.04 s; refinement 256x256: 1.5 s). A row with both solvers and a
 // layer scene of the bar take 0.02-0.3 s, except a few that take seconds (row 6's relaxation,

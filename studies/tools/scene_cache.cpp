@@ -70,7 +70,7 @@ DovetailScene DovetailSceneCache::compute(const DovetailSceneDef& def) {
 namespace {
 
 // What a scene costs, relative to a limit-mode one (measured: a layer scene of the dovetail takes
-// about 100 times as long; README, "Studies over MPI ranks").
+// about 100 times as long; docs/studies.md, "Studies over MPI ranks").
 double scene_cost(const DovetailSceneDef& d) { return d.mode == "limit" ? 1.0 : 100.0; }
 
 std::string scene_label(const DovetailSceneDef& d) {
