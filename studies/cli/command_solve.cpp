@@ -352,14 +352,14 @@ CLI::App* declare_solve(CLI::App& thinlayer, SolveArgs& a) {
   c->add_option("--friction-path", a.friction_path,
                 "fast solver: solve first with these Coulomb coefficients, in order, each\n"
                 "solve warm started from the one before, then with the scene's own f, which\n"
-                "alone decides convergence (a continuation for hard layer scenes; README,\n"
-                "known limitations). Each Fi finite and >= 0; the scene's f must be > 0.")
+                "alone decides convergence (a continuation for hard layer scenes; the\n"
+                "dovetail's example in docs/commands.md). Each Fi finite and >= 0; the scene's f must be > 0.")
       ->type_name("F1,F2,...")->check(number_list("friction-path"))->group(both);
   declare_solver_options(*c, a);
 
   c->add_option("--scene", a.scene,
-                "a JSON scene naming the physical groups of a gmsh .geo or .msh (README,\n"
-                "\"Your own joint\"; cases/lap_joint/lap_joint.json); with it only --mode,\n"
+                "a JSON scene naming the physical groups of a gmsh .geo or .msh\n"
+                "(docs/joints.md; cases/lap_joint/lap_joint.json); with it only --mode,\n"
                 "--eps (mm), --out, --vtu, --json, --solver, --tolerance, --max-iterations,\n"
                 "--omega, --verbose, --force, --max-nodes and --mesh-timeout apply")
       ->type_name("FILE.json")->group("Scene files (your own joint)");
