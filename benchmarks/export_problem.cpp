@@ -70,6 +70,7 @@
 #include "core/solvers/solver_choice.h"
 #include "core/solvers/sparse_newton.h"
 #include "studies/parallel/blas_threads.h"
+#include "benchmarks/driver_main.h"
 
 namespace thinlayer {
 namespace {
@@ -346,11 +347,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace thinlayer
 
-int main(int argc, char** argv) {
-  try {
-    return thinlayer::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "thinlayer_export_problem: %s\n", e.what());
-    return 2;
-  }
-}
+int main(int argc, char** argv) { return thinlayer::run_driver("thinlayer_export_problem", thinlayer::run, argc, argv); }

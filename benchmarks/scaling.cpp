@@ -34,8 +34,7 @@
 #include "cases/scene/scene_file_scenes.h"
 #include "cases/scene/scene_model.h"
 #include "cases/scene/scene_spec.h"
-#include "core/linalg/factor_memory.h"
-#include "studies/parallel/blas_threads.h"
+#include "benchmarks/driver_main.h"
 
 namespace thinlayer {
 namespace {
@@ -175,6 +174,13 @@ LimitLevel limit_level(const std::string& path, double h, int timeout_s, bool be
   return level;
 }
 
+// Whether every run of a level finished within the clock; if not, says that the finer levels are
+// skipped (they would take longer still).
+bool level_finished(bool finished, int timeout_s) {
+  if (!finished) std::printf("(a run of this level did not finish within %d s: the finer levels are skipped)\n", timeout_s);
+  return finished;
+}
+
 int run_limit(const std::string& joint, const std::vector<double>& sizes, int timeout_s, bool before) {
   std::printf("%s: limit mode (sparse Newton) against one bonded linear solve of the same mesh%s\n", joint.c_str(),
               before ? " and the condensed path (before)" : "");
@@ -190,8 +196,7 @@ int run_limit(const std::string& joint, const std::vector<double>& sizes, int ti
                 l.before.stop_cause.c_str(), l.limit.seconds / l.bonded.seconds);
     std::fflush(stdout);
     all_converged = all_converged && l.limit.stop_cause == "converged";
-    if (!l.limit.finished || !l.bonded.finished) {
-      std::printf("(a run of this level did not finish within %d s: the finer levels are skipped)\n", timeout_s);
+    if (!level_finished(l.limit.finished && l.bonded.finished, timeout_s)) {
       all_converged = false;
       break;
     }
@@ -273,8 +278,6 @@ int run(int argc, char** argv) {
   }
   if (!limit_joint.empty()) {
     if (argc % 2 == 0 || sizes.empty()) return usage();
-    use_one_blas_thread();
-    keep_factor_memory();
     return run_limit(limit_joint, sizes, timeout_s, before);
   }
   if (argc % 2 == 0 || sizes.empty() || joint.empty() == dovetail_scene.empty()) return usage();
@@ -285,8 +288,6 @@ int run(int argc, char** argv) {
     law_case = dovetail_scene[0];
     eps = std::stod(dovetail_scene.substr(2));
   }
-  use_one_blas_thread();
-  keep_factor_memory();
   std::printf("%s: layer mode against one bonded linear solve and the limit mode of the same mesh\n",
               joint.empty() ? ("dovetail (" + dovetail_scene + ")").c_str() : joint.c_str());
   std::printf("%9s %8s %6s | %9s %8s | %9s %8s %6s %9s %-10s | %9s %8s | %8s %8s %8s\n", "h", "nodes", "n_S", "bonded_s",
@@ -302,8 +303,7 @@ int run(int argc, char** argv) {
                 l.layer.megabytes / l.bonded.megabytes);
     std::fflush(stdout);
     all_converged = all_converged && l.layer.stop_cause == "converged" && l.limit.stop_cause == "converged";
-    if (!l.layer.finished || !l.bonded.finished || !l.limit.finished) {
-      std::printf("(a run of this level did not finish within %d s: the finer levels are skipped)\n", timeout_s);
+    if (!level_finished(l.layer.finished && l.bonded.finished && l.limit.finished, timeout_s)) {
       all_converged = false;
       break;
     }
@@ -321,11 +321,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace thinlayer
 
-int main(int argc, char** argv) {
-  try {
-    return thinlayer::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "thinlayer_scaling: %s\n", e.what());
-    return 2;
-  }
-}
+int main(int argc, char** argv) { return thinlayer::run_timing_driver("thinlayer_scaling", thinlayer::run, argc, argv); }

@@ -241,17 +241,9 @@ std::pair<SceneRecord, SolveReport> solve_scene(const SolveInput& in) {
   return {std::move(s.record), std::move(s.report)};
 }
 
-nlohmann::json counts_json(const StatusCount& c) { return {{"gap", c.gap}, {"slide", c.slide}, {"stick", c.stick}}; }
-
 // `solve --json`: the scene in one line, for scripts. Non-finite numbers become null.
 std::string summary_line(const SolveInput& in, const SceneRecord& record, const SolveReport& report) {
-  nlohmann::json counts;
-  for (const InterfaceFields& f : record.interfaces) counts[f.name] = counts_json(f.counts());
-  if (!record.combined_status.empty()) {
-    std::vector<NodeStatus> combined;
-    for (int v : record.combined_status) combined.push_back(static_cast<NodeStatus>(v));
-    counts["combined"] = counts_json(count_statuses(combined));
-  }
+  const nlohmann::json counts = status_counts_json(record);
   const double setup = record.numbers.at("setup_time_s");
   nlohmann::json j = {
       {"scene", record.id},

@@ -100,11 +100,7 @@ void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, doubl
   std::printf("  reactions + loads = (%.3g, %.3g) %s\n", sum.x(), sum.y(), force.c_str());
 }
 
-std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene_file, const std::string& mode,
-                             const SceneFileScene& s, const std::string& out, const std::string& vtu,
-                             const ClassificationCost* cost) {
-  const SceneRecord& record = s.record;
-  const SolveReport& report = s.report;
+nlohmann::json status_counts_json(const SceneRecord& record) {
   nlohmann::json counts;
   for (const InterfaceFields& f : record.interfaces) counts[f.name] = counts_json(f.counts());
   if (!record.combined_status.empty()) {
@@ -112,6 +108,15 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
     for (int v : record.combined_status) combined.push_back(static_cast<NodeStatus>(v));
     counts["combined"] = counts_json(count_statuses(combined));
   }
+  return counts;
+}
+
+std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene_file, const std::string& mode,
+                             const SceneFileScene& s, const std::string& out, const std::string& vtu,
+                             const ClassificationCost* cost) {
+  const SceneRecord& record = s.record;
+  const SolveReport& report = s.report;
+  const nlohmann::json counts = status_counts_json(record);
   nlohmann::json reactions = nlohmann::json::object(), loads = nlohmann::json::object();
   for (const auto& [name, R] : record.reactions) reactions[name] = vector_json(R);
   for (const auto& [name, F] : s.loads) loads[name] = vector_json(F);
