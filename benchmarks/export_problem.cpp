@@ -71,21 +71,12 @@
 #include "core/solvers/sparse_newton.h"
 #include "studies/parallel/blas_threads.h"
 #include "benchmarks/driver_main.h"
+#include "benchmarks/scene_at.h"
 
 namespace thinlayer {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A scene file at element size h along its bondlines, its far size in the file's proportion
-// (the rule of benchmarks/scaling.cpp's joint_at, so that the same h gives the same mesh).
-SceneSpec scene_at(const std::string& path, double h) {
-  SceneSpec spec = read_scene_spec(path);
-  const double far_ratio = spec.h_interface && spec.h_far ? *spec.h_far / *spec.h_interface : 4.0;
-  spec.h_interface = h;
-  spec.h_far = h * far_ratio;
-  return spec;
-}
 
 std::ofstream open(const fs::path& path) {
   std::ofstream out(path);

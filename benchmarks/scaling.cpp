@@ -35,6 +35,7 @@
 #include "cases/scene/scene_model.h"
 #include "cases/scene/scene_spec.h"
 #include "benchmarks/driver_main.h"
+#include "benchmarks/scene_at.h"
 
 namespace thinlayer {
 namespace {
@@ -108,15 +109,6 @@ double setup_and_solve(const SceneRecord& record, const SolveReport& report) {
   return (record.numbers.count("setup_time_s") ? record.numbers.at("setup_time_s") : 0.0) + report.wall_time_s;
 }
 
-// A scene file at element size h along its bondlines.
-SceneSpec joint_at(const std::string& path, double h) {
-  SceneSpec spec = read_scene_spec(path);
-  const double far_ratio = spec.h_interface && spec.h_far ? *spec.h_far / *spec.h_interface : 4.0;
-  spec.h_interface = h;
-  spec.h_far = h * far_ratio;
-  return spec;
-}
-
 struct Level {
   Measured bonded, layer, limit;
 };
@@ -124,17 +116,17 @@ struct Level {
 Level joint_level(const std::string& path, double h, int timeout_s) {
   Level level;
   level.layer = in_child([&] {
-    const SceneFileBulk bulk(joint_at(path, h));
+    const SceneFileBulk bulk(scene_at(path, h));
     const SceneFileScene s = solve_scene_file_layer(bulk, 0.0, SolverKind::Fast, {});
     return line_of(setup_and_solve(s.record, s.report), &s.report, &s.record);
   }, timeout_s);
   level.limit = in_child([&] {
-    SceneFileBulk bulk(joint_at(path, h));
+    SceneFileBulk bulk(scene_at(path, h));
     const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, {});
     return line_of(setup_and_solve(s.record, s.report), &s.report, &s.record);
   }, timeout_s);
   level.bonded = in_child([&] {
-    const SceneSpec spec = joint_at(path, h);
+    const SceneSpec spec = scene_at(path, h);
     const SceneFileBulk bulk(spec);
     const SceneLayerModel layer = make_scene_layer_model(spec, bulk.meshes(), bulk.interface_nodes(), 0.0);
     const LinearSystem system(layer.model);
@@ -157,7 +149,7 @@ LimitLevel limit_level(const std::string& path, double h, int timeout_s, bool be
   LimitLevel level;
   auto limit_with = [&](bool sparse_newton) {
     return in_child([&] {
-      SceneFileBulk bulk(joint_at(path, h));
+      SceneFileBulk bulk(scene_at(path, h));
       SolverOptions options;
       options.sparse_newton = sparse_newton;
       const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, options);
@@ -167,7 +159,7 @@ LimitLevel limit_level(const std::string& path, double h, int timeout_s, bool be
   level.limit = limit_with(true);
   if (before) level.before = limit_with(false);
   level.bonded = in_child([&] {
-    const SceneFileBulk bulk(joint_at(path, h));
+    const SceneFileBulk bulk(scene_at(path, h));
     const ContactProblem problem(bulk.system(), bulk.limit_interfaces(0));
     return line_of(bonded_solve_seconds(problem), nullptr, nullptr);
   }, timeout_s);

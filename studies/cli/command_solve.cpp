@@ -250,19 +250,12 @@ std::string summary_line(const SolveInput& in, const SceneRecord& record, const 
       {"case", in.case_name},
       {"mode", in.mode},
       {"law_case", in.law_case},
-      {"solver", report.solver},
-      {"solver_method", report.method},
-      {"converged", report.converged},
-      {"stop_cause", to_string(report.stop_cause)},
-      {"iterations", report.iterations},
-      {"residual", {{"value", report.residual.value()}, {"interface", report.residual.interface},
-                    {"bulk", report.residual.bulk}, {"tolerance", report.tolerance},
-                    {"roundoff_floor", report.residual.floor()}}},
       {"counts", counts},
       {"times_s", {{"solve", report.wall_time_s}, {"setup", setup}}},
       {"out", in.out.empty() ? nullptr : nlohmann::json(in.out)},
       {"vtu", in.vtu.empty() ? nullptr : nlohmann::json(in.vtu)},
   };
+  j.update(solve_report_json(report));
   if (nlohmann::json film = film_json(record); !film.is_null()) j["film"] = std::move(film);
   return j.dump();
 }
