@@ -15,6 +15,7 @@
 
 #include "cases/dovetail/dovetail_mesh.h"
 #include "core/mesh/layer_band.h"
+#include "tests/error_message.h"
 
 namespace thinlayer {
 namespace {
@@ -176,12 +177,7 @@ TEST(LayerBand, VeryThinBand) {
 
 // layer_band's refusal of a band of two elements between these faces: its message, "" if it took them.
 std::string band_refusal(const FacePolyline& minus, const FacePolyline& plus) {
-  try {
-    layer_band(minus, plus, 2);
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+  return message_of<std::invalid_argument>([&] { layer_band(minus, plus, 2); });
 }
 
 TEST(LayerBand, Errors) {

@@ -19,28 +19,21 @@
 #include "core/mesh/gmsh_session.h"
 #include "tests/scene_folder.h"
 #include "tests/uniform_bondline.h"
+#include "tests/error_message.h"
 
 namespace fs = std::filesystem;
 using namespace thinlayer;
 
 namespace {
 
+// The InputError's message of parsing `text`, or of reading it as a scene ("(no error)" if none).
 std::string expect_input_error(const std::string& text) {
-  try {
-    parse_positioned_json(text, "s.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return message_of<InputError>([&] { parse_positioned_json(text, "s.json"); });
 }
 
 std::string spec_error(const std::string& text) {
-  try {
-    scene_spec_from_json(parse_positioned_json(text, "s.json"), ".");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  const std::string m = message_of<InputError>([&] { scene_spec_from_json(parse_positioned_json(text, "s.json"), "."); });
+  return m.empty() ? "(no error)" : m;
 }
 
 using Folder = SceneFolder;
