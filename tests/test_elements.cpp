@@ -81,15 +81,8 @@ std::set<int> boundary_nodes(const Mesh& mesh) {
 // (hx - 0.4 hx)(hy - 0.4 hy) - (0.4 hx)(0.4 hy) = 0.2 hx hy > 0: the cells stay convex, so
 // the quads have a positive Jacobian everywhere and both diagonal splits give valid triangles.
 Mesh distorted_mesh(const MeshKind& kind) {
-  RectangleMeshSpec spec;
-  spec.x0 = -1.0;
-  spec.y0 = 0.5;
-  spec.width = 3.0;
-  spec.height = 2.0;
-  spec.nx = 7;
-  spec.ny = 5;
-  spec.element = kind.element;
-  spec.diagonal = kind.diagonal;
+  const RectangleMeshSpec spec{.x0 = -1.0, .y0 = 0.5, .width = 3.0, .height = 2.0, .nx = 7, .ny = 5,
+                               .element = kind.element, .diagonal = kind.diagonal};
   Mesh mesh = structured_rectangle(spec);
   const double hx = spec.width / spec.nx, hy = spec.height / spec.ny;
   const std::set<int> boundary = boundary_nodes(mesh);
