@@ -25,30 +25,37 @@
 namespace thinlayer {
 namespace {
 
-// One bar scene per level, built once and kept for every benchmark that needs it.
-struct BarLevel {
-  std::unique_ptr<BarBulk> bulk;
+// One scene per level, built once and kept for every benchmark that needs it.
+template <class Bulk>
+struct Level {
+  std::unique_ptr<Bulk> bulk;
   std::unique_ptr<ContactProblem> problem;
   Eigen::VectorXd reference;  // u of the fast solver at residual 1e-12
 };
 
-BarLevel& bar_level(int n) {
-  static std::map<int, BarLevel> levels;
-  auto it = levels.find(n);
-  if (it != levels.end()) return it->second;
-  BarLevel& level = levels[n];
-  bar::MeshOptions mesh;
-  mesh.nx = mesh.ny = n;
-  level.bulk = std::make_unique<BarBulk>(mesh);
-  const Table3Row row1 = load_table3_paper().at(0);
-  level.problem = std::make_unique<ContactProblem>(
-      level.bulk->system(),
-      std::vector<Interface>{bar::make_interface(level.bulk->model(),
-                                                 table3_law(row1))});
+template <class Bulk>
+Level<Bulk> make_level(std::unique_ptr<Bulk> bulk, Interface interface) {
+  Level<Bulk> level;
+  level.bulk = std::move(bulk);
+  level.problem = std::make_unique<ContactProblem>(level.bulk->system(), std::vector<Interface>{std::move(interface)});
   SolverOptions tight;
   tight.tolerance = 1e-12;
   level.reference = solve_fast(*level.problem, level.bulk->condensed(), tight).u;
   return level;
+}
+
+using BarLevel = Level<BarBulk>;
+using DovetailLevel = Level<DovetailLimitBulk>;
+
+// The bar on n x n elements, Table 3's row 1.
+BarLevel& bar_level(int n) {
+  static std::map<int, BarLevel> levels;
+  if (auto it = levels.find(n); it != levels.end()) return it->second;
+  bar::MeshOptions mesh;
+  mesh.nx = mesh.ny = n;
+  auto bulk = std::make_unique<BarBulk>(mesh);
+  Interface interface = bar::make_interface(bulk->model(), table3_law(load_table3_paper().at(0)));
+  return levels.emplace(n, make_level(std::move(bulk), std::move(interface))).first->second;
 }
 
 void report(benchmark::State& state, const ContactProblem& problem, const SolveReport& r, const Eigen::VectorXd& ref) {
@@ -110,29 +117,17 @@ void BarRelaxation(benchmark::State& state) {
 }
 
 // The dovetail's limit mode, case d, at element sizes 0.05, 0.025 and 0.0125 along S (levels
-// 0, 1, 2), built once per level and kept for every benchmark that needs it.
-struct DovetailLevel {
-  std::unique_ptr<DovetailLimitBulk> bulk;
-  std::unique_ptr<ContactProblem> problem;
-  Eigen::VectorXd reference;  // u of the fast solver at residual 1e-12
-};
-
+// 0, 1, 2).
 DovetailLevel& dovetail_level(int level) {
   static std::map<int, DovetailLevel> levels;
-  auto it = levels.find(level);
-  if (it != levels.end()) return it->second;
-  DovetailLevel& l = levels[level];
+  if (auto it = levels.find(level); it != levels.end()) return it->second;
   dovetail::MeshOptions mesh;
   mesh.h_interface = 0.05 / (1 << level);
   mesh.h_far = 4 * mesh.h_interface;  // the default ratio (0.1 / 0.025)
-  l.bulk = std::make_unique<DovetailLimitBulk>(mesh);
-  l.problem = std::make_unique<ContactProblem>(
-      l.bulk->system(), std::vector<Interface>{dovetail::make_limit_interface(
-                            l.bulk->model(), dovetail::limit_law(dovetail::exponents_of('d')))});
-  SolverOptions tight;
-  tight.tolerance = 1e-12;
-  l.reference = solve_fast(*l.problem, l.bulk->condensed(), tight).u;
-  return l;
+  auto bulk = std::make_unique<DovetailLimitBulk>(mesh);
+  Interface interface =
+      dovetail::make_limit_interface(bulk->model(), dovetail::limit_law(dovetail::exponents_of('d')));
+  return levels.emplace(level, make_level(std::move(bulk), std::move(interface))).first->second;
 }
 
 // The fast solver as a user runs it once: condensation + active set.

@@ -70,21 +70,13 @@
 #include "core/solvers/solver_choice.h"
 #include "core/solvers/sparse_newton.h"
 #include "studies/parallel/blas_threads.h"
+#include "benchmarks/driver_main.h"
+#include "benchmarks/scene_at.h"
 
 namespace thinlayer {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A scene file at element size h along its bondlines, its far size in the file's proportion
-// (the rule of benchmarks/scaling.cpp's joint_at, so that the same h gives the same mesh).
-SceneSpec scene_at(const std::string& path, double h) {
-  SceneSpec spec = read_scene_spec(path);
-  const double far_ratio = spec.h_interface && spec.h_far ? *spec.h_far / *spec.h_interface : 4.0;
-  spec.h_interface = h;
-  spec.h_far = h * far_ratio;
-  return spec;
-}
 
 std::ofstream open(const fs::path& path) {
   std::ofstream out(path);
@@ -346,11 +338,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace thinlayer
 
-int main(int argc, char** argv) {
-  try {
-    return thinlayer::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "thinlayer_export_problem: %s\n", e.what());
-    return 2;
-  }
-}
+int main(int argc, char** argv) { return thinlayer::run_driver("thinlayer_export_problem", thinlayer::run, argc, argv); }

@@ -18,8 +18,7 @@
 
 #include "core/io/output_target.h"
 #include "studies/drivers/generated_scenes.h"
-#include "core/linalg/factor_memory.h"
-#include "studies/parallel/blas_threads.h"
+#include "benchmarks/driver_main.h"
 
 namespace thinlayer {
 namespace {
@@ -197,8 +196,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace thinlayer
 
-int main(int argc, char** argv) {
-  thinlayer::use_one_blas_thread();
-  thinlayer::keep_factor_memory();
-  return thinlayer::run(argc, argv);
-}
+int main(int argc, char** argv) { return thinlayer::run_timing_driver("thinlayer_random_scenes", thinlayer::run, argc, argv); }

@@ -34,8 +34,8 @@
 #include "cases/scene/scene_file_scenes.h"
 #include "cases/scene/scene_model.h"
 #include "cases/scene/scene_spec.h"
-#include "core/linalg/factor_memory.h"
-#include "studies/parallel/blas_threads.h"
+#include "benchmarks/driver_main.h"
+#include "benchmarks/scene_at.h"
 
 namespace thinlayer {
 namespace {
@@ -109,15 +109,6 @@ double setup_and_solve(const SceneRecord& record, const SolveReport& report) {
   return (record.numbers.count("setup_time_s") ? record.numbers.at("setup_time_s") : 0.0) + report.wall_time_s;
 }
 
-// A scene file at element size h along its bondlines.
-SceneSpec joint_at(const std::string& path, double h) {
-  SceneSpec spec = read_scene_spec(path);
-  const double far_ratio = spec.h_interface && spec.h_far ? *spec.h_far / *spec.h_interface : 4.0;
-  spec.h_interface = h;
-  spec.h_far = h * far_ratio;
-  return spec;
-}
-
 struct Level {
   Measured bonded, layer, limit;
 };
@@ -125,17 +116,17 @@ struct Level {
 Level joint_level(const std::string& path, double h, int timeout_s) {
   Level level;
   level.layer = in_child([&] {
-    const SceneFileBulk bulk(joint_at(path, h));
+    const SceneFileBulk bulk(scene_at(path, h));
     const SceneFileScene s = solve_scene_file_layer(bulk, 0.0, SolverKind::Fast, {});
     return line_of(setup_and_solve(s.record, s.report), &s.report, &s.record);
   }, timeout_s);
   level.limit = in_child([&] {
-    SceneFileBulk bulk(joint_at(path, h));
+    SceneFileBulk bulk(scene_at(path, h));
     const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, {});
     return line_of(setup_and_solve(s.record, s.report), &s.report, &s.record);
   }, timeout_s);
   level.bonded = in_child([&] {
-    const SceneSpec spec = joint_at(path, h);
+    const SceneSpec spec = scene_at(path, h);
     const SceneFileBulk bulk(spec);
     const SceneLayerModel layer = make_scene_layer_model(spec, bulk.meshes(), bulk.interface_nodes(), 0.0);
     const LinearSystem system(layer.model);
@@ -158,7 +149,7 @@ LimitLevel limit_level(const std::string& path, double h, int timeout_s, bool be
   LimitLevel level;
   auto limit_with = [&](bool sparse_newton) {
     return in_child([&] {
-      SceneFileBulk bulk(joint_at(path, h));
+      SceneFileBulk bulk(scene_at(path, h));
       SolverOptions options;
       options.sparse_newton = sparse_newton;
       const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, options);
@@ -168,11 +159,18 @@ LimitLevel limit_level(const std::string& path, double h, int timeout_s, bool be
   level.limit = limit_with(true);
   if (before) level.before = limit_with(false);
   level.bonded = in_child([&] {
-    const SceneFileBulk bulk(joint_at(path, h));
+    const SceneFileBulk bulk(scene_at(path, h));
     const ContactProblem problem(bulk.system(), bulk.limit_interfaces(0));
     return line_of(bonded_solve_seconds(problem), nullptr, nullptr);
   }, timeout_s);
   return level;
+}
+
+// Whether every run of a level finished within the clock; if not, says that the finer levels are
+// skipped (they would take longer still).
+bool level_finished(bool finished, int timeout_s) {
+  if (!finished) std::printf("(a run of this level did not finish within %d s: the finer levels are skipped)\n", timeout_s);
+  return finished;
 }
 
 int run_limit(const std::string& joint, const std::vector<double>& sizes, int timeout_s, bool before) {
@@ -190,8 +188,7 @@ int run_limit(const std::string& joint, const std::vector<double>& sizes, int ti
                 l.before.stop_cause.c_str(), l.limit.seconds / l.bonded.seconds);
     std::fflush(stdout);
     all_converged = all_converged && l.limit.stop_cause == "converged";
-    if (!l.limit.finished || !l.bonded.finished) {
-      std::printf("(a run of this level did not finish within %d s: the finer levels are skipped)\n", timeout_s);
+    if (!level_finished(l.limit.finished && l.bonded.finished, timeout_s)) {
       all_converged = false;
       break;
     }
@@ -273,8 +270,6 @@ int run(int argc, char** argv) {
   }
   if (!limit_joint.empty()) {
     if (argc % 2 == 0 || sizes.empty()) return usage();
-    use_one_blas_thread();
-    keep_factor_memory();
     return run_limit(limit_joint, sizes, timeout_s, before);
   }
   if (argc % 2 == 0 || sizes.empty() || joint.empty() == dovetail_scene.empty()) return usage();
@@ -285,8 +280,6 @@ int run(int argc, char** argv) {
     law_case = dovetail_scene[0];
     eps = std::stod(dovetail_scene.substr(2));
   }
-  use_one_blas_thread();
-  keep_factor_memory();
   std::printf("%s: layer mode against one bonded linear solve and the limit mode of the same mesh\n",
               joint.empty() ? ("dovetail (" + dovetail_scene + ")").c_str() : joint.c_str());
   std::printf("%9s %8s %6s | %9s %8s | %9s %8s %6s %9s %-10s | %9s %8s | %8s %8s %8s\n", "h", "nodes", "n_S", "bonded_s",
@@ -302,8 +295,7 @@ int run(int argc, char** argv) {
                 l.layer.megabytes / l.bonded.megabytes);
     std::fflush(stdout);
     all_converged = all_converged && l.layer.stop_cause == "converged" && l.limit.stop_cause == "converged";
-    if (!l.layer.finished || !l.bonded.finished || !l.limit.finished) {
-      std::printf("(a run of this level did not finish within %d s: the finer levels are skipped)\n", timeout_s);
+    if (!level_finished(l.layer.finished && l.bonded.finished && l.limit.finished, timeout_s)) {
       all_converged = false;
       break;
     }
@@ -321,11 +313,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace thinlayer
 
-int main(int argc, char** argv) {
-  try {
-    return thinlayer::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "thinlayer_scaling: %s\n", e.what());
-    return 2;
-  }
-}
+int main(int argc, char** argv) { return thinlayer::run_timing_driver("thinlayer_scaling", thinlayer::run, argc, argv); }

@@ -29,8 +29,7 @@
 #include "core/io/reference_tables.h"
 #include "cases/bar/bar_scenes.h"
 #include "cases/dovetail/dovetail_scenes.h"
-#include "core/linalg/factor_memory.h"
-#include "studies/parallel/blas_threads.h"
+#include "benchmarks/driver_main.h"
 
 namespace thinlayer {
 namespace {
@@ -190,8 +189,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace thinlayer
 
-int main(int argc, char** argv) {
-  thinlayer::use_one_blas_thread();
-  thinlayer::keep_factor_memory();
-  return thinlayer::run(argc, argv);
-}
+int main(int argc, char** argv) { return thinlayer::run_timing_driver("thinlayer_scene_set", thinlayer::run, argc, argv); }

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The convergence study (S2) of the bonded laws (SPEC §1.6, README "Bonded faces"): the dovetail
+"""The convergence study (S2) of the bonded laws (SPEC §1.6, docs/joints.md "Bonded faces"): the dovetail
 of cases/bonded_laws as a scene file, for each Table 2 case (γ, δ) and each combination of faces
 (both bonded: the bilateral spring law; one bonded, one in contact: Table 1's law; both in contact:
 the paper's), run through `thinlayer study convergence --scene`; prints one Markdown table of the

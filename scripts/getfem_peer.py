@@ -46,7 +46,8 @@ The mapping (GetFEM's conventions read in src/getfem_contact_and_friction_nodal.
   map, evaluated here in double), and compared with thinlayer's: relative norms of u, r and of the
   supports' reactions, and every node's status (gap / slide / stick, classified as thinlayer does).
 
-Examples (the table of the README's peer section; one thread, medians of 3):
+Examples (the measurements of docs/studies.md, "GetFEM, the peer on the same discrete problem"; one
+thread, medians of 3):
   /usr/bin/python3 scripts/getfem_peer.py --exporter build/thinlayer_export_problem \
       --scene cases/friction_lap/friction_lap.json --sizes 0.25,0.106,0.056
   /usr/bin/python3 scripts/getfem_peer.py --problem /tmp/flap_0.25          # an exported folder
@@ -526,6 +527,23 @@ def check(results):
     return not failures
 
 
+STARTS = ("rest", "bonded")
+
+
+def starts_list(text):
+    """--starts: the names of STARTS, comma separated, each once; "both" is all of them. Anything else
+    is refused with the names allowed (argparse turns the ArgumentTypeError into one line, exit 2)."""
+    names = []
+    for name in text.split(","):
+        expanded = list(STARTS) if name == "both" else [name]
+        for start in expanded:
+            if start not in STARTS:
+                raise argparse.ArgumentTypeError("unknown start %r (expected rest, bonded or both)" % name)
+            if start not in names:
+                names.append(start)
+    return names
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     source = parser.add_argument_group("problems: exported folders, or export them here")
@@ -537,7 +555,9 @@ def main():
     parser.add_argument("--repeat", type=int, default=3,
                         help="rounds: each a thinlayer solve (with --sizes), GetFEM's bonded solve and a GetFEM solve "
                              "from each start; medians are kept")
-    parser.add_argument("--starts", default="rest,bonded", help="rest, bonded or both")
+    parser.add_argument("--starts", type=starts_list, default="rest,bonded",
+                        help="the starts GetFEM solves from: rest, bonded, both (= rest,bonded) or a comma list "
+                             "of rest and bonded (default rest,bonded)")
     parser.add_argument("--lsearch", default="simplest",
                         help="GetFEM's line search: simplest (the default here), basic, systematic, quadratic, or "
                              "default (its Newton with step control)")
@@ -554,7 +574,6 @@ def main():
     parser.add_argument("--check", action="store_true", help="exit 1 unless GetFEM from the bonded start agrees")
     parser.add_argument("--json", help="write every number to this file")
     options = parser.parse_args()
-    options.starts = [s for s in options.starts.split(",") if s]
 
     print("GetFEM %s, one thread (OMP/OPENBLAS_NUM_THREADS=1); line search %s, linear solver %s; %s" %
           (getattr(gf, "__version__", "5.4"), options.lsearch, options.lsolver, load()))

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The project's test command (README): dependencies, Release build, then every test.
+# The project's test command (README.md, "The two commands"): dependencies, Release build, then every test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh

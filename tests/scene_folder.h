@@ -22,6 +22,11 @@ struct SceneFolder {
     std::ofstream(path / name) << text;
     return (path / name).string();
   }
+  // A scene of two files, NAME.geo and NAME.json (which names NAME.geo); the scene file's path.
+  std::string write_scene(const std::string& name, const std::string& geo, const std::string& json) const {
+    write(name + ".geo", geo);
+    return write(name + ".json", json);
+  }
 };
 
 inline std::string full_digits(double x) {

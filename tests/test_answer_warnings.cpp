@@ -1,7 +1,8 @@
 // Warnings with one meaning each (issue 35, item 3): the film admissibility of SPEC §1.5 for
 // contact faces and films only; a bonded glue's largest strain reported as a load level, never a
 // warning; in both modes a body that moves more than 5 % of its size, and in limit mode a bondline
-// that slips more than one element along S (the layer mode's rule). The joints are the README's:
+// that slips more than one element along S (the layer mode's rule). The joints are those of docs/solvers.md
+// ("Small displacements, both modes"):
 // a glued aluminium single lap at 20 MPa of mean shear (2 mm sheets, 25 mm overlap, 0.2 mm epoxy,
 // 500 N/mm on the grip), with its grip held sideways or left free; the friction-held double lap;
 // the paper's lap joint pulled 1 mm. Expected values by hand in each test.
@@ -29,7 +30,7 @@ std::string replaced(std::string text, const std::vector<std::pair<std::string, 
   return text;
 }
 
-// The aluminium single lap of the README at 20 MPa: cases/single_lap's drawing with 2 mm sheets,
+// The aluminium single lap of docs/solvers.md at 20 MPa: cases/single_lap's drawing with 2 mm sheets,
 // 50 mm long, overlapping over 25 mm; 500 N/mm on the grip; the grip held sideways or not.
 std::string aluminium_lap(const SceneFolder& f, bool grip_held_sideways) {
   f.write("single_lap.geo", replaced(read_text_file(cases_dir + "/single_lap/single_lap.geo"),

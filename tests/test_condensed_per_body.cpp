@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 
+#include "cases/bar/bar.h"
 #include "cases/dovetail/dovetail_scenes.h"
 #include "core/linalg/connected_components.h"
 #include "core/solvers/condensed_interface.h"
@@ -25,6 +26,17 @@ namespace {
 template <class A, class B>
 double relative(const A& a, const B& reference) {
   return (a - reference).norm() / reference.norm();
+}
+
+// The condensation against references computed without it: W and g₀ to 1e-12, W exactly
+// symmetric, its reciprocal condition estimate in (0, 1].
+void expect_condensation(const CondensedInterface& condensed, const Eigen::MatrixXd& W_reference,
+                         const Eigen::VectorXd& g0_reference) {
+  EXPECT_LT(relative(condensed.W(), W_reference), 1e-12);
+  EXPECT_EQ((condensed.W() - condensed.W().transpose()).norm(), 0.0);
+  EXPECT_LT(relative(condensed.g0(), g0_reference), 1e-12);
+  EXPECT_GT(condensed.rcond(), 0.0);
+  EXPECT_LE(condensed.rcond(), 1.0);
 }
 
 // A path graph i — i + stride on `count` unknowns starting at `first`, in an n × n matrix.
@@ -79,11 +91,7 @@ TEST(CondensedInterface, PerBodyCondensationMatchesADenseFactorOfTheWholeStiffne
   const Eigen::VectorXd g0_reference = B * dense.solve(system.F()) + problem.jump_offset();
 
   const CondensedInterface condensed(problem);
-  EXPECT_LT(relative(condensed.W(), W_reference), 1e-12);
-  EXPECT_EQ((condensed.W() - condensed.W().transpose()).norm(), 0.0);
-  EXPECT_LT(relative(condensed.g0(), g0_reference), 1e-12);
-  EXPECT_GT(condensed.rcond(), 0.0);
-  EXPECT_LE(condensed.rcond(), 1.0);
+  expect_condensation(condensed, W_reference, g0_reference);
 
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> uniform(-1, 1);
@@ -148,6 +156,22 @@ TEST(CondensedInterface, DovetailLimitAnswerIsTheSolveOfItsSettledStatuses) {
   const Eigen::VectorXd u = K.solve(Eigen::VectorXd(system.F() + problem.B().transpose() * r));
   EXPECT_LT(relative(report.r, r), 1e-12);
   EXPECT_LT(relative(report.u, u), 1e-12);
+}
+
+// The bar (limit mode, 32 contact nodes): W and g₀ from the block of K⁻¹ on Γ against
+// W = B K⁻¹ Bᵀ and g₀ = B K⁻¹ F + g_D with 2m dense solves by Eigen's own sparse Cholesky.
+TEST(CondensedInterface, DelassusOperatorOfTheBarMatchesTwoMDenseSolves) {
+  const Model model = bar::make_model({32, 32, ElementType::Q1, TriangleDiagonal::Right, PlaneHypothesis::Strain});
+  const LinearSystem system(model);
+  const ContactProblem problem(system, {bar::make_interface(model, InterfaceLaw::make(450, 540, 1.0))});
+  ASSERT_EQ(problem.num_nodes(), 32);  // the contact nodes along AD
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> reference(system.K());
+  ASSERT_EQ(reference.info(), Eigen::Success);
+  const Eigen::MatrixXd Bt = Eigen::MatrixXd(problem.B().transpose());
+  const Eigen::MatrixXd W_reference = problem.B() * reference.solve(Bt);
+  const Eigen::VectorXd g0_reference = problem.B() * reference.solve(system.F()) + problem.jump_offset();
+
+  expect_condensation(CondensedInterface(problem), W_reference, g0_reference);
 }
 
 }  // namespace

@@ -81,15 +81,8 @@ std::set<int> boundary_nodes(const Mesh& mesh) {
 // (hx - 0.4 hx)(hy - 0.4 hy) - (0.4 hx)(0.4 hy) = 0.2 hx hy > 0: the cells stay convex, so
 // the quads have a positive Jacobian everywhere and both diagonal splits give valid triangles.
 Mesh distorted_mesh(const MeshKind& kind) {
-  RectangleMeshSpec spec;
-  spec.x0 = -1.0;
-  spec.y0 = 0.5;
-  spec.width = 3.0;
-  spec.height = 2.0;
-  spec.nx = 7;
-  spec.ny = 5;
-  spec.element = kind.element;
-  spec.diagonal = kind.diagonal;
+  const RectangleMeshSpec spec{.x0 = -1.0, .y0 = 0.5, .width = 3.0, .height = 2.0, .nx = 7, .ny = 5,
+                               .element = kind.element, .diagonal = kind.diagonal};
   Mesh mesh = structured_rectangle(spec);
   const double hx = spec.width / spec.nx, hy = spec.height / spec.ny;
   const std::set<int> boundary = boundary_nodes(mesh);
@@ -305,73 +298,66 @@ double polygon_area(const Eigen::Matrix<double, N, 2>& xy) {
   return 0.5 * twice;
 }
 
-TEST(ElementStiffness, Q1IsSymmetric) {
-  const Matrix8d K = q1_stiffness(general_quad(), adherent().D());
+// The element of N corners (Q1: 4, P1: 3) on the general cell of its kind, and its stiffness.
+template <int N>
+Eigen::Matrix<double, N, 2> general_cell() {
+  if constexpr (N == 4) return general_quad();
+  else return general_triangle();
+}
+
+template <int N>
+Eigen::Matrix<double, 2 * N, 2 * N> element_stiffness(const Eigen::Matrix<double, N, 2>& xy, const Eigen::Matrix3d& D) {
+  if constexpr (N == 4) return q1_stiffness(xy, D);
+  else return p1_stiffness(xy, D);
+}
+
+template <int N>
+void expect_symmetric() {
+  const auto K = element_stiffness<N>(general_cell<N>(), adherent().D());
   EXPECT_LE((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-13 * K.cwiseAbs().maxCoeff());
 }
 
-TEST(ElementStiffness, P1IsSymmetric) {
-  const Matrix6d K = p1_stiffness(general_triangle(), adherent().D());
-  EXPECT_LE((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-13 * K.cwiseAbs().maxCoeff());
-}
-
-TEST(ElementStiffness, Q1RigidModesAreInTheKernel) {
-  const Coords4 xy = general_quad();
-  const Matrix8d K = q1_stiffness(xy, adherent().D());
-  const auto r = rigid_modes<4>(xy);
+template <int N>
+void expect_rigid_modes_in_the_kernel() {
+  const Eigen::Matrix<double, N, 2> xy = general_cell<N>();
+  const auto K = element_stiffness<N>(xy, adherent().D());
+  const auto r = rigid_modes<N>(xy);
   for (int m = 0; m < 3; ++m)
     EXPECT_LE((K * r.col(m)).norm(), 1e-13 * K.norm() * r.col(m).norm()) << "mode " << m;
 }
 
-TEST(ElementStiffness, P1RigidModesAreInTheKernel) {
-  const Coords3 xy = general_triangle();
-  const Matrix6d K = p1_stiffness(xy, adherent().D());
-  const auto r = rigid_modes<3>(xy);
-  for (int m = 0; m < 3; ++m)
-    EXPECT_LE((K * r.col(m)).norm(), 1e-13 * K.norm() * r.col(m).norm()) << "mode " << m;
-}
-
-// Full 2×2 integration leaves no spurious (hourglass) mode: exactly three zero eigenvalues
-// (the rigid modes) and 8 - 3 = 5 positive ones for Q1; 6 - 3 = 3 positive ones for P1.
-TEST(ElementStiffness, Q1HasExactlyThreeZeroEnergyModes) {
-  const Matrix8d K = q1_stiffness(general_quad(), adherent().D());
-  const Eigen::SelfAdjointEigenSolver<Matrix8d> eig(K);
-  const auto ev = eig.eigenvalues();  // ascending
-  const double top = ev[7];
-  for (int i = 0; i < 3; ++i) EXPECT_LE(std::abs(ev[i]), 1e-12 * top) << "eigenvalue " << i;
-  EXPECT_GT(ev[3], 1e-3 * top);
-}
-
-TEST(ElementStiffness, P1HasExactlyThreeZeroEnergyModes) {
-  const Matrix6d K = p1_stiffness(general_triangle(), adherent().D());
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> eig(K);
-  const auto ev = eig.eigenvalues();
-  const double top = ev[5];
+// Full integration leaves no spurious (hourglass) mode: exactly three zero eigenvalues (the rigid
+// modes) and 2N - 3 positive ones.
+template <int N>
+void expect_exactly_three_zero_energy_modes() {
+  const Eigen::Matrix<double, 2 * N, 2 * N> K = element_stiffness<N>(general_cell<N>(), adherent().D());
+  const auto ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 2 * N, 2 * N>>(K).eigenvalues();  // ascending
+  const double top = ev[2 * N - 1];
   for (int i = 0; i < 3; ++i) EXPECT_LE(std::abs(ev[i]), 1e-12 * top) << "eigenvalue " << i;
   EXPECT_GT(ev[3], 1e-3 * top);
 }
 
 // For u = A x + b the strain is uniform, so the element's strain energy ½ uᵀ K u must be
 // area · ½ εᵀ D ε. For Q1, det J is linear in (ξ, η), so 2×2 Gauss integrates the area exactly.
-TEST(ElementStiffness, Q1EnergyOfUniformStrainIsAreaTimesEnergyDensity) {
-  const Coords4 xy = general_quad();
+template <int N>
+void expect_uniform_strain_energy() {
+  const Eigen::Matrix<double, N, 2> xy = general_cell<N>();
   const Eigen::Matrix3d D = adherent().D();
   const LinearField field = general_field();
-  Eigen::Matrix<double, 8, 1> u;
-  for (int a = 0; a < 4; ++a) u.segment<2>(2 * a) = field.at(xy.row(a).transpose());
-  const double expected = polygon_area<4>(xy) * field.strain().dot(D * field.strain());
-  EXPECT_NEAR(u.dot(q1_stiffness(xy, D) * u), expected, 1e-13 * expected);
+  Eigen::Matrix<double, 2 * N, 1> u;
+  for (int a = 0; a < N; ++a) u.template segment<2>(2 * a) = field.at(xy.row(a).transpose());
+  const double expected = polygon_area<N>(xy) * field.strain().dot(D * field.strain());
+  EXPECT_NEAR(u.dot(element_stiffness<N>(xy, D) * u), expected, 1e-13 * expected);
 }
 
-TEST(ElementStiffness, P1EnergyOfUniformStrainIsAreaTimesEnergyDensity) {
-  const Coords3 xy = general_triangle();
-  const Eigen::Matrix3d D = adherent().D();
-  const LinearField field = general_field();
-  Eigen::Matrix<double, 6, 1> u;
-  for (int a = 0; a < 3; ++a) u.segment<2>(2 * a) = field.at(xy.row(a).transpose());
-  const double expected = polygon_area<3>(xy) * field.strain().dot(D * field.strain());
-  EXPECT_NEAR(u.dot(p1_stiffness(xy, D) * u), expected, 1e-13 * expected);
-}
+TEST(ElementStiffness, Q1IsSymmetric) { expect_symmetric<4>(); }
+TEST(ElementStiffness, P1IsSymmetric) { expect_symmetric<3>(); }
+TEST(ElementStiffness, Q1RigidModesAreInTheKernel) { expect_rigid_modes_in_the_kernel<4>(); }
+TEST(ElementStiffness, P1RigidModesAreInTheKernel) { expect_rigid_modes_in_the_kernel<3>(); }
+TEST(ElementStiffness, Q1HasExactlyThreeZeroEnergyModes) { expect_exactly_three_zero_energy_modes<4>(); }
+TEST(ElementStiffness, P1HasExactlyThreeZeroEnergyModes) { expect_exactly_three_zero_energy_modes<3>(); }
+TEST(ElementStiffness, Q1EnergyOfUniformStrainIsAreaTimesEnergyDensity) { expect_uniform_strain_energy<4>(); }
+TEST(ElementStiffness, P1EnergyOfUniformStrainIsAreaTimesEnergyDensity) { expect_uniform_strain_energy<3>(); }
 
 // For a parallelogram the map is affine: det J = area / 4 (reference square of area 4).
 TEST(ElementStiffness, Q1JacobianOfParallelogramIsQuarterArea) {

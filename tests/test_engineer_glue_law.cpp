@@ -37,7 +37,7 @@ std::pair<double, double> grip_forces(SceneFileBulk& bulk, double eps) {
 
 // The limit law carries the load the layer carries: at the glue's own thickness t the same force to
 // first order, and, as the same glue thins, the two converge at the rate the asymptotics predict
-// for a finite law, p = 1 (case (d), README "Bonded faces"): the relative difference at t/10 is
+// for a finite law, p = 1 (case (d), docs/joints.md "Bonded faces"): the relative difference at t/10 is
 // below a fifth of the one at t (p > 0.7) and below 3 %. With the rule's μ̄ = 0 the limit mode
 // carried nothing (1e-22 N/mm) at every thickness.
 void expect_limit_carries_what_the_layer_carries(SceneFileBulk& bulk) {

@@ -13,6 +13,7 @@
 #include "cases/scene/geo_scan.h"
 #include "cases/scene/json_positions.h"
 #include "cases/scene/scene_sources.h"
+#include "tests/error_message.h"
 
 namespace {
 
@@ -23,12 +24,7 @@ using thinlayer::SceneSources;
 
 // "" if the scan passes, else its message.
 std::string scan(const std::string& text) {
-  try {
-    thinlayer::scan_geo_text(text, "t.geo");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return message_of<InputError>([&] { thinlayer::scan_geo_text(text, "t.geo"); });
 }
 
 const char* const geometry =
@@ -119,12 +115,7 @@ struct SceneSourcesTest : ::testing::Test {
   }
   // "" if the sources are accepted, else the message.
   std::string refusal(const std::string& entry_text, bool mesh = false) {
-    try {
-      read(entry_text, mesh);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
+    return message_of<InputError>([&] { read(entry_text, mesh); });
   }
 };
 

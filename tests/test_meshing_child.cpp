@@ -17,6 +17,7 @@
 #include "core/mesh/mesh_bytes.h"
 #include "core/mesh/meshing_child.h"
 #include "core/mesh/read_box.h"
+#include "tests/error_message.h"
 
 namespace {
 
@@ -30,12 +31,7 @@ namespace fs = std::filesystem;
 
 // The message of the MeshingChildError that running `work` throws ("" if none).
 std::string failure(const std::function<std::string()>& work, const MeshingChildLimits& limits = {}) {
-  try {
-    run_in_meshing_child(work, limits);
-  } catch (const MeshingChildError& e) {
-    return e.what();
-  }
-  return "";
+  return message_of<MeshingChildError>([&] { run_in_meshing_child(work, limits); });
 }
 
 TEST(MeshingChild, HandsBackWhatTheWorkReturns) {

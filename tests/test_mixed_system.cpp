@@ -83,12 +83,7 @@ TEST(SparseLU, SaysSingular) {
   EXPECT_FALSE(lu.factor(A));
 }
 
-bar::MeshOptions bar_mesh(double load_scale = 1) {
-  bar::MeshOptions mesh;
-  mesh.nx = mesh.ny = 16;
-  mesh.load_scale = load_scale;
-  return mesh;
-}
+bar::MeshOptions bar_mesh(double load_scale = 1) { return {.nx = 16, .ny = 16, .load_scale = load_scale}; }
 
 // Two paths to one answer: Table 3's row 4 (λ̄ = 4.5e8, μ̄ = 0.054 daN/mm³) sticks on all of AD in
 // limit mode, and the mixed system with every node Stick must give the condensed fast solver's

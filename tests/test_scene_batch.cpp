@@ -113,6 +113,22 @@ TEST(SceneBatch, RankZeroWorkingAloneSolvesEverythingItself) {
   wait_for_each_other();
 }
 
+// `a` written as bytes and read back: every byte read, and reading more than was written an
+// error, not garbage.
+template <class T>
+T round_trip(const T& a) {
+  ByteWriter w;
+  put(w, a);
+  const std::string bytes = w.take();
+  ByteReader r(bytes);
+  T b;
+  get(r, b);
+  EXPECT_TRUE(r.done());
+  int extra = 0;
+  EXPECT_THROW(get(r, extra), std::runtime_error);
+  return b;
+}
+
 TEST(ResultBytes, ASceneRecordComesBackBitForBit) {
   SceneRecord a;
   a.id = "bar-x";
@@ -142,13 +158,7 @@ TEST(ResultBytes, ASceneRecordComesBackBitForBit) {
   a.interfaces = {f};
   a.reactions["D"] = Eigen::Vector2d(1.5, -2.25);
   a.combined_status = {2, 2, 0};
-  ByteWriter w;
-  put(w, a);
-  const std::string bytes = w.take();
-  ByteReader r(bytes);
-  SceneRecord b;
-  get(r, b);
-  EXPECT_TRUE(r.done());
+  const SceneRecord b = round_trip(a);
   EXPECT_EQ(b.id, a.id);
   EXPECT_EQ(b.text, a.text);
   EXPECT_EQ(b.numbers.at("eps"), 1e-4);
@@ -172,9 +182,6 @@ TEST(ResultBytes, ASceneRecordComesBackBitForBit) {
   EXPECT_EQ(b.interfaces[0].node_minus, f.node_minus);
   EXPECT_EQ(b.reactions.at("D"), a.reactions.at("D"));
   EXPECT_EQ(b.combined_status, a.combined_status);
-  // Reading more than was written is an error, not garbage.
-  int extra = 0;
-  EXPECT_THROW(get(r, extra), std::runtime_error);
 }
 
 TEST(ResultBytes, ASolveReportKeepsItsResidualBodyByBody) {
@@ -186,13 +193,7 @@ TEST(ResultBytes, ASolveReportKeepsItsResidualBodyByBody) {
   a.residual.per_interface = {2e-11, 1e-13};
   a.residual.per_body = {4e-11, 3e-12, 5e-13};
   a.stop_cause = StopCause::Converged;
-  ByteWriter w;
-  put(w, a);
-  const std::string bytes = w.take();
-  ByteReader r(bytes);
-  SolveReport b;
-  get(r, b);
-  EXPECT_TRUE(r.done());
+  const SolveReport b = round_trip(a);
   EXPECT_EQ(b.u, a.u);
   EXPECT_EQ(b.residual.per_interface, a.residual.per_interface);
   EXPECT_EQ(b.residual.per_body, a.residual.per_body);

@@ -19,28 +19,21 @@
 #include "core/mesh/gmsh_session.h"
 #include "tests/scene_folder.h"
 #include "tests/uniform_bondline.h"
+#include "tests/error_message.h"
 
 namespace fs = std::filesystem;
 using namespace thinlayer;
 
 namespace {
 
+// The InputError's message of parsing `text`, or of reading it as a scene ("(no error)" if none).
 std::string expect_input_error(const std::string& text) {
-  try {
-    parse_positioned_json(text, "s.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return message_of<InputError>([&] { parse_positioned_json(text, "s.json"); });
 }
 
 std::string spec_error(const std::string& text) {
-  try {
-    scene_spec_from_json(parse_positioned_json(text, "s.json"), ".");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  const std::string m = message_of<InputError>([&] { scene_spec_from_json(parse_positioned_json(text, "s.json"), "."); });
+  return m.empty() ? "(no error)" : m;
 }
 
 using Folder = SceneFolder;
@@ -177,8 +170,7 @@ TEST(SceneClosedForm, LimitModeJumpsAreSigmaOverKToRoundOff) {
   ASSERT_LT(cf.sigma_N(), 0);                                // in contact
   ASSERT_LT(std::abs(cf.sigma_T()), std::abs(cf.sigma_N()));  // sticking (f = 1)
   Folder f;
-  f.write("cf.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("cf", cf.geo(), cf.json())));
   const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
   ASSERT_TRUE(s.report.converged) << s.report.message;
   const double error = jump_error(bulk, s.record, cf);
@@ -197,8 +189,7 @@ TEST(SceneClosedForm, LimitModeJumpsAreSigmaOverKToRoundOff) {
 TEST(SceneClosedForm, BodyHeldByContactAloneLimitMode) {
   const ClosedForm cf;
   Folder f;
-  f.write("cf.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json(/*plus_supported=*/false))));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("cf", cf.geo(), cf.json(/*plus_supported=*/false))));
   ASSERT_TRUE(bulk.model().bodies[1].floating);
   const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
   ASSERT_TRUE(s.report.converged) << s.report.message;
@@ -210,8 +201,7 @@ TEST(SceneClosedForm, BodyHeldByContactAloneLimitMode) {
 TEST(SceneClosedForm, LayerModeConvergesToTheJumps) {
   const ClosedForm cf;
   Folder f;
-  f.write("cf.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("cf", cf.geo(), cf.json())));
   double previous = INFINITY;
   for (double eps : {1e-1, 1e-2, 1e-3, 1e-4}) {
     const SceneFileScene s = solve_scene_file_layer(bulk, eps, SolverKind::Fast, SolverOptions{});
@@ -227,8 +217,7 @@ TEST(SceneClosedForm, LayerModeConvergesToTheJumps) {
 TEST(SceneClosedForm, TooThickALayerIsRefused) {
   const ClosedForm cf;
   Folder f;
-  f.write("cf.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("cf", cf.geo(), cf.json())));
   ASSERT_GT(bulk.thickest_layer(), 0);
   EXPECT_THROW(solve_scene_file_layer(bulk, 1.01 * bulk.thickest_layer(), SolverKind::Fast, SolverOptions{}),
                std::invalid_argument);
@@ -269,8 +258,7 @@ TEST(SceneClosedForm, MeshFileUsedAsIs) {
 TEST(SceneClosedForm, BodyHeldByContactAloneLayerMode) {
   const ClosedForm cf;
   Folder f;
-  f.write("cf.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json(/*plus_supported=*/false))));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("cf", cf.geo(), cf.json(/*plus_supported=*/false))));
   double previous = INFINITY;
   for (double eps : {1e-1, 1e-2, 1e-3}) {
     const SceneFileScene s = solve_scene_file_layer(bulk, eps, SolverKind::Fast, SolverOptions{});
@@ -307,8 +295,7 @@ TEST(SceneBonded, LimitModeBilateralSpringCarriesTensionToRoundOff) {
   ASSERT_GT(cf.sigma_N(), 0);  // tension across the bondline
   ASSERT_GT(std::abs(cf.sigma_T()), 0.1 * cf.sigma_N());
   Folder f;
-  f.write("cf.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("cf", cf.geo(), cf.json())));
   const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
   ASSERT_TRUE(s.report.converged) << s.report.message;
   EXPECT_TRUE(s.bondlines.at(0).law.bilateral);
@@ -333,8 +320,7 @@ TEST(SceneBonded, LimitModeBilateralSpringCarriesTensionToRoundOff) {
 TEST(SceneBonded, LayerModeBondedLayerConvergesToTheBilateralJumps) {
   const ClosedForm cf = bonded_tension();
   Folder f;
-  f.write("cf.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("cf", cf.geo(), cf.json())));
   double previous = INFINITY;
   for (double eps : {1e-2, 1e-3, 1e-4}) {
     const SceneFileScene s = solve_scene_file_layer(bulk, eps, SolverKind::Fast, SolverOptions{});
@@ -354,8 +340,7 @@ TEST(SceneBonded, ContactFacesOpenUnderTheSameTension) {
   ClosedForm cf = bonded_tension();
   cf.faces = "";
   Folder f;
-  f.write("cf.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("cf", cf.geo(), cf.json())));
   const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
   ASSERT_TRUE(s.report.converged) << s.report.message;
   EXPECT_EQ(s.limit.gap, static_cast<int>(s.record.interfaces.at(0).status.size()));
@@ -372,8 +357,7 @@ TEST(SceneBonded, OneFaceBondedTheContactFaceOpens) {
   ClosedForm cf = bonded_tension();
   cf.faces = "{\"plus\": \"bonded\", \"minus\": \"contact\"}";
   Folder f;
-  f.write("cf.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("cf.json", cf.json())));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("cf", cf.geo(), cf.json())));
   const SceneFileScene s = solve_scene_file_layer(bulk, 1e-3, SolverKind::Fast, SolverOptions{});
   ASSERT_TRUE(s.report.converged) << s.report.message;
   EXPECT_EQ(s.counts.minus_face.gap, static_cast<int>(s.record.interfaces.at(1).status.size()));  // S-: contact, open

@@ -87,8 +87,7 @@ TEST(SceneJoint, SeveralBondlinesLimitModeExact) {
   const TwoBondlines cf;
   ASSERT_GT(cf.sigma_N(), 0);
   SceneFolder f;
-  f.write("t.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("t.json", cf.json())));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("t", cf.geo(), cf.json())));
   ASSERT_EQ(bulk.spec().interfaces.size(), 2u);
   EXPECT_TRUE(bulk.model().bodies[1].floating);  // the middle body: held by its two bondlines alone
   const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
@@ -112,8 +111,7 @@ TEST(SceneJoint, SeveralBondlinesLimitModeExact) {
 TEST(SceneJoint, SeveralBondlinesLayerModeConverges) {
   const TwoBondlines cf;
   SceneFolder f;
-  f.write("t.geo", cf.geo());
-  SceneFileBulk bulk(read_scene_spec(f.write("t.json", cf.json())));
+  SceneFileBulk bulk(read_scene_spec(f.write_scene("t", cf.geo(), cf.json())));
   double previous = INFINITY;
   for (double eps : {1e-2, 1e-3}) {
     const SceneFileScene s = solve_scene_file_layer(bulk, eps, SolverKind::Fast, SolverOptions{});

@@ -1,5 +1,5 @@
-// SparseCholesky (CHOLMOD) and the condensation built on it, against computations that do not
-// use the code under test: dense Eigen factorisations, and Eigen's own sparse Cholesky.
+// SparseCholesky (CHOLMOD), against computations that do not use the code under test: dense Eigen
+// factorisations (the condensation built on it: test_condensed_per_body.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,12 +10,8 @@
 #include <vector>
 
 #include <Eigen/Dense>
-#include <Eigen/SparseCholesky>
 
-#include "cases/bar/bar.h"
 #include "core/linalg/sparse_cholesky.h"
-#include "core/solvers/condensed_interface.h"
-#include "core/solvers/contact_problem.h"
 
 namespace thinlayer {
 namespace {
@@ -166,27 +162,6 @@ TEST(SparseCholesky, RcondNeverUnderestimatesTheTrueReciprocalCondition) {
   const double estimate = SparseCholesky(A).rcond();
   EXPECT_GE(estimate, true_rcond);
   EXPECT_LE(estimate, 1.0);
-}
-
-// The bar (limit mode, 32 contact nodes): W and g₀ from the block of K⁻¹ on Γ against
-// W = B K⁻¹ Bᵀ and g₀ = B K⁻¹ F + g_D with 2m dense solves by Eigen's own sparse Cholesky.
-TEST(CondensedInterface, DelassusOperatorOfTheBarMatchesTwoMDenseSolves) {
-  const Model model = bar::make_model({32, 32, ElementType::Q1, TriangleDiagonal::Right, PlaneHypothesis::Strain});
-  const LinearSystem system(model);
-  const ContactProblem problem(system, {bar::make_interface(model, InterfaceLaw::make(450, 540, 1.0))});
-  ASSERT_EQ(problem.num_nodes(), 32);  // the contact nodes along AD
-  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> reference(system.K());
-  ASSERT_EQ(reference.info(), Eigen::Success);
-  const Eigen::MatrixXd Bt = Eigen::MatrixXd(problem.B().transpose());
-  const Eigen::MatrixXd W_reference = problem.B() * reference.solve(Bt);
-  const Eigen::VectorXd g0_reference = problem.B() * reference.solve(system.F()) + problem.jump_offset();
-
-  const CondensedInterface condensed(problem);
-  EXPECT_LT(relative(condensed.W(), W_reference), 1e-12);
-  EXPECT_EQ((condensed.W() - condensed.W().transpose()).norm(), 0.0);
-  EXPECT_LT(relative(condensed.g0(), g0_reference), 1e-12);
-  EXPECT_GT(condensed.rcond(), 0.0);
-  EXPECT_LE(condensed.rcond(), 1.0);
 }
 
 }  // namespace

@@ -20,12 +20,7 @@ namespace {
 
 const InterfaceLaw compliant = InterfaceLaw::make(450, 540, 1.0);  // daN/mm³
 
-bar::MeshOptions small_bar(double load_scale = 1) {
-  bar::MeshOptions mesh;
-  mesh.nx = mesh.ny = 8;
-  mesh.load_scale = load_scale;
-  return mesh;
-}
+bar::MeshOptions small_bar(double load_scale = 1) { return {.nx = 8, .ny = 8, .load_scale = load_scale}; }
 
 TEST(StopCause, ConvergedSolvesSayConverged) {
   const Model model = bar::make_model(small_bar());

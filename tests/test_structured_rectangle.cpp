@@ -61,16 +61,7 @@ void expect_body_on_left(const Mesh& mesh, const std::string& set) {
 
 RectangleMeshSpec spec_of(ElementType element,
                           TriangleDiagonal diagonal = TriangleDiagonal::Right) {
-  RectangleMeshSpec spec;
-  spec.x0 = -1.5;
-  spec.y0 = 2.0;
-  spec.width = 3.0;
-  spec.height = 0.7;
-  spec.nx = 5;
-  spec.ny = 3;
-  spec.element = element;
-  spec.diagonal = diagonal;
-  return spec;
+  return {.x0 = -1.5, .y0 = 2.0, .width = 3.0, .height = 0.7, .nx = 5, .ny = 3, .element = element, .diagonal = diagonal};
 }
 
 // The diagonals of a P1 mesh, as their slope signs: +1 for "/", -1 for "\".
@@ -165,11 +156,15 @@ TEST(StructuredRectangle, InvalidInputThrows) {
 }
 
 // Geometry and named sets, for every element type and diagonal.
-class RectangleGeometry : public testing::TestWithParam<RectangleMeshSpec> {};
-
-TEST_P(RectangleGeometry, CellsAreCounterClockwiseAndTileTheRectangle) {
+// Each test: the rectangle of the parameter, meshed; (x1, y1) its top-right corner.
+class RectangleGeometry : public testing::TestWithParam<RectangleMeshSpec> {
+ protected:
   const RectangleMeshSpec spec = GetParam();
   const Mesh mesh = structured_rectangle(spec);
+  const double x1 = spec.x0 + spec.width, y1 = spec.y0 + spec.height;
+};
+
+TEST_P(RectangleGeometry, CellsAreCounterClockwiseAndTileTheRectangle) {
   double total = 0;
   for (double area : cell_areas(mesh)) {
     EXPECT_GT(area, 0);
@@ -179,8 +174,6 @@ TEST_P(RectangleGeometry, CellsAreCounterClockwiseAndTileTheRectangle) {
 }
 
 TEST_P(RectangleGeometry, NodesAreExactGridPointsOnce) {
-  const RectangleMeshSpec spec = GetParam();
-  const Mesh mesh = structured_rectangle(spec);
   std::set<std::pair<int, int>> seen;
   for (int n = 0; n < mesh.num_nodes(); ++n) {
     const int i =
@@ -196,9 +189,6 @@ TEST_P(RectangleGeometry, NodesAreExactGridPointsOnce) {
 }
 
 TEST_P(RectangleGeometry, SideNodeSetsAreSortedAndComplete) {
-  const RectangleMeshSpec spec = GetParam();
-  const Mesh mesh = structured_rectangle(spec);
-  const double x1 = spec.x0 + spec.width, y1 = spec.y0 + spec.height;
   struct Side {
     const char* name;
     int along;        // coordinate increasing along the set
@@ -223,9 +213,6 @@ TEST_P(RectangleGeometry, SideNodeSetsAreSortedAndComplete) {
 }
 
 TEST_P(RectangleGeometry, CornerSetsHoldTheCornerNode) {
-  const RectangleMeshSpec spec = GetParam();
-  const Mesh mesh = structured_rectangle(spec);
-  const double x1 = spec.x0 + spec.width, y1 = spec.y0 + spec.height;
   struct Corner {
     const char* name;
     double x, y;
@@ -248,8 +235,6 @@ TEST_P(RectangleGeometry, CornerSetsHoldTheCornerNode) {
 }
 
 TEST_P(RectangleGeometry, EdgeSetsRunCounterClockwise) {
-  const RectangleMeshSpec spec = GetParam();
-  const Mesh mesh = structured_rectangle(spec);
   struct Side {
     const char* name;
     int dx_sign, dy_sign;
@@ -282,14 +267,7 @@ RectangleMeshSpec with_element(RectangleMeshSpec spec, ElementType element,
 }
 
 RectangleMeshSpec far_from_origin() {
-  RectangleMeshSpec spec;
-  spec.x0 = 1e4;
-  spec.y0 = -3e3;
-  spec.width = 0.1;
-  spec.height = 2.5;
-  spec.nx = 7;
-  spec.ny = 11;
-  return spec;
+  return {.x0 = 1e4, .y0 = -3e3, .width = 0.1, .height = 2.5, .nx = 7, .ny = 11};
 }
 
 INSTANTIATE_TEST_SUITE_P(

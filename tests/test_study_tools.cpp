@@ -15,11 +15,17 @@
 namespace thinlayer {
 namespace {
 
-TEST(RateFit, RecoversAnExactPowerLaw) {
-  const std::vector<double> eps = {1e-2, 5e-3, 1e-3, 5e-4, 1e-4};
+// The thicknesses of the fits' tests, and e = floor + C εᵖ on them (exact: by hand, not by the fit).
+const std::vector<double> fit_eps = {1e-2, 5e-3, 1e-3, 5e-4, 1e-4};
+
+std::vector<double> power_law(double floor, double C, double p) {
   std::vector<double> e;
-  for (double x : eps) e.push_back(3.0 * std::pow(x, 0.5));
-  const auto fit = fit_power_law(eps, e);
+  for (double x : fit_eps) e.push_back(floor + C * std::pow(x, p));
+  return e;
+}
+
+TEST(RateFit, RecoversAnExactPowerLaw) {
+  const auto fit = fit_power_law(fit_eps, power_law(0, 3.0, 0.5));
   ASSERT_TRUE(fit);
   EXPECT_NEAR(fit->p, 0.5, 1e-12);
   EXPECT_NEAR(fit->C, 3.0, 1e-10);
@@ -30,7 +36,7 @@ TEST(RateFit, RecoversAnExactPowerLaw) {
 TEST(RateFit, StandardErrorMatchesTheScatterOfTheSlope) {
   // Noise of known size on log e: the standard error must estimate the spread of p over
   // many samples (the textbook regression result), neither far smaller nor far larger.
-  const std::vector<double> eps = {1e-2, 5e-3, 1e-3, 5e-4, 1e-4};
+  const std::vector<double>& eps = fit_eps;
   std::mt19937 rng(42);
   std::normal_distribution<double> noise(0.0, 0.1);
   double sum = 0, sum2 = 0, stderr_mean = 0;
@@ -218,23 +224,18 @@ namespace thinlayer {
 namespace {
 
 TEST(RateFitWithFloor, RecoversRateAndFloor) {
-  const std::vector<double> eps = {1e-2, 5e-3, 1e-3, 5e-4, 1e-4};
-  std::vector<double> e;
-  for (double x : eps) e.push_back(4e-4 + 0.15 * x);
-  const auto fit = fit_power_law_with_floor(eps, e);
+  const std::vector<double> e = power_law(4e-4, 0.15, 1.0);
+  const auto fit = fit_power_law_with_floor(fit_eps, e);
   ASSERT_TRUE(fit);
   EXPECT_NEAR(fit->p, 1.0, 1e-4);
   EXPECT_NEAR(fit->floor, 4e-4, 1e-8);
   EXPECT_NEAR(fit->C, 0.15, 1e-4);
   // The plain power law sees the floor as a slower rate.
-  EXPECT_LT(fit_power_law(eps, e)->p, 0.7);
+  EXPECT_LT(fit_power_law(fit_eps, e)->p, 0.7);
 }
 
 TEST(RateFitWithFloor, WithoutAFloorItIsThePowerLaw) {
-  const std::vector<double> eps = {1e-2, 5e-3, 1e-3, 5e-4, 1e-4};
-  std::vector<double> e;
-  for (double x : eps) e.push_back(0.3 * std::pow(x, 0.5));
-  const auto fit = fit_power_law_with_floor(eps, e);
+  const auto fit = fit_power_law_with_floor(fit_eps, power_law(0, 0.3, 0.5));
   ASSERT_TRUE(fit);
   EXPECT_NEAR(fit->p, 0.5, 1e-4);
   EXPECT_NEAR(fit->floor, 0.0, 1e-9);

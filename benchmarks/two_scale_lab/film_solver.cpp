@@ -42,6 +42,50 @@ ColumnOf columns_of_nodes(const ContactProblem& problem) {
   return out;
 }
 
+// The rows of the jump at `nodes` on the unknowns `position` marks (y index → its index there, −1
+// elsewhere): G on those unknowns, and the rest of the jump frozen at the answer, g_frozen.
+struct JumpRows {
+  Eigen::MatrixXd G;
+  Eigen::VectorXd g_frozen;
+};
+
+JumpRows jump_rows(const ContactProblem& problem, const MixedSystem& mixed, const MixedSystem::Answer& answer,
+                   const std::vector<int>& nodes, const std::vector<int>& position, int n) {
+  const int rows = 2 * static_cast<int>(nodes.size());
+  JumpRows j{Eigen::MatrixXd::Zero(rows, n), Eigen::VectorXd(rows)};
+  for (int q = 0; q < static_cast<int>(nodes.size()); ++q)
+    for (int c = 0; c < 2; ++c) {
+      const int row = 2 * nodes[q] + c;
+      double frozen = problem.jump_offset()[row];
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(mixed.B_y(), row); it; ++it) {
+        if (position[it.col()] >= 0) j.G(2 * q + c, position[it.col()]) = it.value();
+        else frozen += it.value() * answer.y[it.col()];
+      }
+      j.g_frozen[2 * q + c] = frozen;
+    }
+  return j;
+}
+
+// Those unknowns eliminated: W = G K⁻¹ Gᵀ (symmetrised) and g = g_frozen + G K⁻¹ f, K Jacobi-scaled
+// first (a film's stiffness spans its membrane and through-thickness scales).
+struct Eliminated {
+  Eigen::MatrixXd W;
+  Eigen::VectorXd g;
+};
+
+Eliminated eliminate(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& f, const JumpRows& j) {
+  const Eigen::VectorXd scale = Eigen::VectorXd(K.diagonal()).cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+  const Eigen::SparseMatrix<double> M = scale.asDiagonal() * K * scale.asDiagonal();
+  const SparseCholesky factor(M);
+  const Eigen::MatrixXd GD = j.G * scale.asDiagonal();
+  const Eigen::MatrixXd Z = factor.solve(Eigen::MatrixXd(GD.transpose()));
+  Eliminated e;
+  e.W = GD * Z;
+  e.W = 0.5 * (e.W + e.W.transpose()).eval();
+  e.g = j.g_frozen + GD * factor.solve(Eigen::VectorXd(scale.asDiagonal() * f));
+  return e;
+}
+
 }  // namespace
 
 FilmRun solve_film(const ContactProblem& problem, const MixedSystem& mixed, const MixedSystem::Answer& answer,
@@ -109,29 +153,11 @@ FilmRun solve_film(const ContactProblem& problem, const MixedSystem& mixed, cons
   }
   // 3. The film's rows: G_f on the film's unknowns, the rest of the jump frozen.
   const int rows = 2 * static_cast<int>(run.nodes.size());
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, nf);
-  Eigen::VectorXd g_frozen(rows);
-  for (int q = 0; q < static_cast<int>(run.nodes.size()); ++q)
-    for (int c = 0; c < 2; ++c) {
-      const int row = 2 * run.nodes[q] + c;
-      double frozen = problem.jump_offset()[row];
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(mixed.B_y(), row); it; ++it) {
-        if (position[it.col()] >= 0) G(2 * q + c, position[it.col()]) = it.value();
-        else frozen += it.value() * answer.y[it.col()];
-      }
-      g_frozen[2 * q + c] = frozen;
-    }
-  // 4. Eliminated: W_f = G K_FF⁻¹ Gᵀ (Jacobi-scaled: the film's stiffness spans its membrane and
-  //    through-thickness scales), g_f = g_frozen + G K_FF⁻¹ f_F.
-  const Eigen::VectorXd scale = Eigen::VectorXd(K_FF.diagonal()).cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
-  const Eigen::SparseMatrix<double> M = scale.asDiagonal() * K_FF * scale.asDiagonal();
-  const SparseCholesky factor(M);
-  const Eigen::MatrixXd GD = G * scale.asDiagonal();
-  const Eigen::MatrixXd Z = factor.solve(Eigen::MatrixXd(GD.transpose()));
+  // 4. Eliminated: W_f = G K_FF⁻¹ Gᵀ, g_f = g_frozen + G K_FF⁻¹ f_F.
+  Eliminated film_eliminated = eliminate(K_FF, f_F, jump_rows(problem, mixed, answer, run.nodes, position, nf));
   Condensed c;
-  c.W = GD * Z;
-  c.W = 0.5 * (c.W + c.W.transpose()).eval();
-  c.g0 = g_frozen + GD * factor.solve(Eigen::VectorXd(scale.asDiagonal() * f_F));
+  c.W = std::move(film_eliminated.W);
+  c.g0 = std::move(film_eliminated.g);
   for (int q = 0; q < static_cast<int>(run.nodes.size()); ++q) {
     const int k = run.nodes[q];
     const InterfaceLaw& law = problem.law(k);
@@ -212,26 +238,9 @@ FilmRun solve_band(const ContactProblem& problem, const MixedSystem& mixed, cons
     }
     K.setFromTriplets(t.begin(), t.end());
   }
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, nf);
-  Eigen::VectorXd g_frozen(rows);
-  for (int q = 0; q < n_nodes; ++q)
-    for (int c = 0; c < 2; ++c) {
-      const int row = 2 * run.nodes[q] + c;
-      double frozen = problem.jump_offset()[row];
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(mixed.B_y(), row); it; ++it) {
-        if (position[it.col()] >= 0) G(2 * q + c, position[it.col()]) = it.value();
-        else frozen += it.value() * answer.y[it.col()];
-      }
-      g_frozen[2 * q + c] = frozen;
-    }
-  const Eigen::VectorXd scale = Eigen::VectorXd(K.diagonal()).cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
-  const Eigen::SparseMatrix<double> M = scale.asDiagonal() * K * scale.asDiagonal();
-  const SparseCholesky factor(M);
-  const Eigen::MatrixXd GD = G * scale.asDiagonal();
-  const Eigen::MatrixXd Z = factor.solve(Eigen::MatrixXd(GD.transpose()));
-  Eigen::MatrixXd W = GD * Z;
-  W = 0.5 * (W + W.transpose()).eval();
-  const Eigen::VectorXd g = g_frozen + GD * factor.solve(Eigen::VectorXd(scale.asDiagonal() * f));
+  const Eliminated band = eliminate(K, f, jump_rows(problem, mixed, answer, run.nodes, position, nf));
+  const Eigen::MatrixXd& W = band.W;
+  const Eigen::VectorXd& g = band.g;
 
   // Bounds: pinched nodes d_N = 0 (r_N free), |r_T| ≤ f p; film nodes r_N ≤ 0, |r_T| ≤ f p (fixed point).
   const double infinity = std::numeric_limits<double>::infinity();

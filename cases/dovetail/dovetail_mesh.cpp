@@ -22,29 +22,6 @@ constexpr double kFlankSlope = 0.4;
 // by ε·√1.16 horizontally.
 const double kFlankSecant = std::sqrt(1 + kFlankSlope * kFlankSlope);
 
-// The size field grows the element size by at most this much per unit distance from S.
-constexpr double kSizeGrowthRate = 0.2;
-
-// Sets a gmsh number option for the lifetime of the object (options are process-global).
-class ScopedGmshOption {
- public:
-  ScopedGmshOption(std::string name, double value) : name_(std::move(name)) {
-    gmsh::option::getNumber(name_, previous_);
-    gmsh::option::setNumber(name_, value);
-  }
-  ~ScopedGmshOption() {
-    try {
-      gmsh::option::setNumber(name_, previous_);
-    } catch (...) {  // a destructor must not throw
-    }
-  }
-  ScopedGmshOption(const ScopedGmshOption&) = delete;
-  ScopedGmshOption& operator=(const ScopedGmshOption&) = delete;
-
- private:
-  std::string name_;
-  double previous_ = 0;
-};
 
 void validate(const MeshOptions& o) {
   auto fail = [](const std::string& what) {

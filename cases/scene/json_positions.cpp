@@ -232,18 +232,7 @@ void check_bounds(const std::string& text, const std::string& source) {
 
 }  // namespace
 
-TextPosition position_of(const std::string& text, std::size_t offset) {
-  TextPosition p;
-  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++p.line;
-      p.column = 1;
-    } else {
-      ++p.column;
-    }
-  }
-  return p;
-}
+TextPosition position_of(const std::string& text, std::size_t offset) { return PositionCursor(text).at(offset); }
 
 TextPosition PositionedJson::at(const std::string& pointer) const {
   if (positions.nodes.empty()) return {};

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/mesh/gmsh_session.h"
 #include "core/mesh/meshing_child.h"
 
 namespace thinlayer {
@@ -16,9 +17,6 @@ namespace {
 
 // Nodes per h² of area (see the header; calibrated on the lap joint and the scene tests' strips).
 double nodes_per_area(ElementType element) { return element == ElementType::Q1 ? 2.5 : 1.2; }
-
-// The size growth of scene_mesh.cpp's threshold field (mm per mm from the bondline).
-constexpr double size_growth_rate = 0.2;
 
 std::vector<int> entities(int dim, const std::string& name) {
   std::vector<int> tags;
@@ -96,20 +94,11 @@ double clipped(double h) {
   return std::min(std::max(h, option("Mesh.MeshSizeMin")), option("Mesh.MeshSizeMax")) * option("Mesh.MeshSizeFactor");
 }
 
-// Every surface of the model: gmsh meshes them all, a surface in no body too.
-std::vector<int> all_surfaces() {
-  gmsh::vectorpair dim_tags;
-  gmsh::model::getEntities(dim_tags, 2);
-  std::vector<int> tags;
-  for (const auto& [dim, tag] : dim_tags) tags.push_back(tag);
-  return tags;
-}
-
 // ∫ dA / h² over a body of area `a` with `l` mm of bondline on its boundary: a band along the
 // bondline where h grows from h_i to h_f, and h_f beyond.
 double inverse_square_size_integral(double a, double l, double h_i, double h_f) {
   if (l <= 0) return a / (h_f * h_f);
-  const double reach = std::max((h_f - h_i) / size_growth_rate, h_f);  // scene_mesh.cpp's DistMax
+  const double reach = std::max((h_f - h_i) / kSizeGrowthRate, h_f);  // scene_mesh.cpp's DistMax
   const double depth = std::min(reach, a / l);
   const double k = (h_f - h_i) / reach;
   const double band = k > 0 ? l / k * (1 / h_i - 1 / (h_i + k * depth)) : l * depth / (h_i * h_i);
@@ -131,7 +120,7 @@ double estimate_from_mesh_size(const SceneSpec& spec) {
       if (on_bondline.count(std::abs(c))) l += length(c);
     nodes += inverse_square_size_integral(area(surfaces), l, h_i, h_f);
   }
-  for (int s : all_surfaces())  // away from the bondlines: the far size
+  for (int s : all_surfaces())  // gmsh meshes every surface, one in no body too: at the far size
     if (!in_body.count(s)) nodes += area({s}) / (h_f * h_f);
   return nodes_per_area(spec.element) * nodes;
 }

@@ -18,31 +18,6 @@ namespace thinlayer {
 
 namespace {
 
-// The element size grows by at most this much per unit distance from the interface: the
-// dovetail's rate (cases/dovetail/dovetail_mesh.cpp), gentle enough for well-shaped quads.
-constexpr double kSizeGrowthRate = 0.2;
-
-// Sets a gmsh number option (process-global) for the lifetime of the object.
-class ScopedOption {
- public:
-  ScopedOption(std::string name, double value) : name_(std::move(name)) {
-    gmsh::option::getNumber(name_, previous_);
-    gmsh::option::setNumber(name_, value);
-  }
-  ~ScopedOption() {
-    try {
-      gmsh::option::setNumber(name_, previous_);
-    } catch (...) {  // a destructor must not throw
-    }
-  }
-  ScopedOption(const ScopedOption&) = delete;
-  ScopedOption& operator=(const ScopedOption&) = delete;
-
- private:
-  std::string name_;
-  double previous_ = 0;
-};
-
 // Physical groups by (dimension, name) → model entity tags.
 std::map<std::pair<int, std::string>, std::vector<int>> physical_groups() {
   std::map<std::pair<int, std::string>, std::vector<int>> groups;
@@ -159,7 +134,7 @@ SceneMeshes mesh_in_this_process(const SceneSpec& spec, const std::string& stage
   GmshModelScope scope("scene");
   // gmsh's own options for this model only: the scope clears the model, the options stay
   // process-global, so they are set back when done.
-  ScopedOption recombine_all("Mesh.RecombineAll", 0), recombination("Mesh.RecombinationAlgorithm", 1),
+  ScopedGmshOption recombine_all("Mesh.RecombineAll", 0), recombination("Mesh.RecombinationAlgorithm", 1),
       algorithm("Mesh.Algorithm", 6), from_boundary("Mesh.MeshSizeExtendFromBoundary", 1),
       from_points("Mesh.MeshSizeFromPoints", 1), from_curvature("Mesh.MeshSizeFromCurvature", 0);
   SceneMeshes out;

@@ -60,7 +60,8 @@ struct SceneInterfaceSpec {
   std::optional<double> lambda_bar, mu_bar;  // or "law": a limit law only (may be inf)
   // "make_room": the direction in which the plus body moves to make room for the layer in layer
   // mode (a unit vector; given as any nonzero [dx, dy]). Absent: the bondline's nodal normal (from
-  // minus into plus). A scarf joint's load axis keeps its pulled strip in line (README).
+  // minus into plus). A scarf joint's load axis keeps its pulled strip in line (docs/joints.md, "Make room
+  // in a chosen direction").
   std::optional<std::array<double, 2>> make_room;
   std::string where, group_where, make_room_where;
 

@@ -18,7 +18,7 @@
 //    rule would choose instead is classified_law(), printed beside it, never solved for it.
 //
 // Faces (SPEC §1.6): each face of the layer is in contact with its adherent (Signorini-Coulomb,
-// the paper's) or bonded to it (tied). The limit law of each combination (derived in the README,
+// the paper's) or bonded to it (tied). The limit law of each combination (derived in docs/joints.md,
 // "Bonded faces"): both faces bonded, the bilateral spring law σ = −K [u]; otherwise Table 1's law,
 // the contact living on one face or two (two skidding blocks in series slide as one).
 // Units: moduli in the scene's stress unit (daN/mm², or MPa), λ̄, μ̄ in that unit per mm.

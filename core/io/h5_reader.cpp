@@ -53,6 +53,21 @@ OpenDataset open_dataset(hid_t file, const std::string& path, const std::string&
           static_cast<std::size_t>(size)};
 }
 
+// A numeric dataset, converted by HDF5 to `native` (T's type) if its class is one of `accepted`.
+template <typename T>
+std::vector<T> read_numbers(hid_t file, const std::string& path, const std::string& file_name, hid_t native,
+                            std::initializer_list<H5T_class_t> accepted, const std::string& expected,
+                            std::vector<std::size_t>* shape) {
+  const std::string what = "dataset " + at(path, file_name);
+  OpenDataset d = open_dataset(file, path, file_name);
+  require_class(d.type.get(), accepted, what, expected);
+  std::vector<T> values(d.size);
+  if (!values.empty())
+    check(H5Dread(d.dataset.get(), native, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "cannot read " + what);
+  if (shape != nullptr) *shape = d.shape;
+  return values;
+}
+
 struct OpenAttr {
   Handle attr;
   Handle type;
@@ -196,30 +211,12 @@ std::vector<std::string> H5Reader::attr_strings(const std::string& path, const s
 
 std::vector<double> H5Reader::read_doubles(const std::string& path,
                                            std::vector<std::size_t>* shape) const {
-  const std::string what = "dataset " + at(path, path_);
-  OpenDataset d = open_dataset(file_, path, path_);
-  require_class(d.type.get(), {H5T_FLOAT, H5T_INTEGER}, what, "numeric");
-  std::vector<double> values(d.size);
-  if (!values.empty())
-    check(H5Dread(d.dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                  values.data()),
-          "cannot read " + what);
-  if (shape != nullptr) *shape = d.shape;
-  return values;
+  return read_numbers<double>(file_, path, path_, H5T_NATIVE_DOUBLE, {H5T_FLOAT, H5T_INTEGER}, "numeric", shape);
 }
 
 std::vector<long long> H5Reader::read_ints(const std::string& path,
                                            std::vector<std::size_t>* shape) const {
-  const std::string what = "dataset " + at(path, path_);
-  OpenDataset d = open_dataset(file_, path, path_);
-  require_class(d.type.get(), {H5T_INTEGER}, what, "an integer dataset");
-  std::vector<long long> values(d.size);
-  if (!values.empty())
-    check(H5Dread(d.dataset.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                  values.data()),
-          "cannot read " + what);
-  if (shape != nullptr) *shape = d.shape;
-  return values;
+  return read_numbers<long long>(file_, path, path_, H5T_NATIVE_LLONG, {H5T_INTEGER}, "an integer dataset", shape);
 }
 
 std::vector<std::string> H5Reader::read_strings(const std::string& path,

@@ -56,14 +56,6 @@ struct GmshCells {
   std::vector<std::size_t> node_tags;  // nodes_per_cell tags per cell, concatenated
 };
 
-std::vector<int> all_surfaces() {
-  gmsh::vectorpair dim_tags;
-  gmsh::model::getEntities(dim_tags, 2);
-  std::vector<int> tags;
-  for (const auto& [dim, tag] : dim_tags) tags.push_back(tag);
-  return tags;
-}
-
 ElementType element_type_of(int gmsh_type, int surface) {
   if (gmsh_type == kGmshQuadrangle4) return ElementType::Q1;
   if (gmsh_type == kGmshTriangle3) return ElementType::P1;
@@ -356,6 +348,26 @@ GmshModelScope::~GmshModelScope() {
     gmsh::clear();
   } catch (...) {  // a destructor must not throw; the next scope clears again anyway
   }
+}
+
+ScopedGmshOption::ScopedGmshOption(std::string name, double value) : name_(std::move(name)) {
+  gmsh::option::getNumber(name_, previous_);
+  gmsh::option::setNumber(name_, value);
+}
+
+ScopedGmshOption::~ScopedGmshOption() {
+  try {
+    gmsh::option::setNumber(name_, previous_);
+  } catch (...) {  // a destructor must not throw
+  }
+}
+
+std::vector<int> all_surfaces() {
+  gmsh::vectorpair dim_tags;
+  gmsh::model::getEntities(dim_tags, 2);
+  std::vector<int> tags;
+  for (const auto& [dim, tag] : dim_tags) tags.push_back(tag);
+  return tags;
 }
 
 NamedBoundary physical_group(int dim, int tag, const std::string& name) {

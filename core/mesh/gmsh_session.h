@@ -42,6 +42,28 @@ class GmshModelScope {
   std::unique_lock<std::mutex> lock_;
 };
 
+// Sets a gmsh number option for the lifetime of the object and restores its value after (gmsh's
+// options are process-global).
+class ScopedGmshOption {
+ public:
+  ScopedGmshOption(std::string name, double value);
+  ~ScopedGmshOption();
+  ScopedGmshOption(const ScopedGmshOption&) = delete;
+  ScopedGmshOption& operator=(const ScopedGmshOption&) = delete;
+
+ private:
+  std::string name_;
+  double previous_ = 0;
+};
+
+// The size field of a mesh graded away from its bondlines grows the element size by at most this
+// much per unit distance from them: gentle enough for well-shaped quads (the dovetail's and every
+// scene file's mesh).
+constexpr double kSizeGrowthRate = 0.2;
+
+// The tags of every surface (2D entity) of the current gmsh model.
+std::vector<int> all_surfaces();
+
 // fork() while holding the lock of GmshModelScope, so that no other thread of this process is
 // inside gmsh at that instant (the child's copy of gmsh is whole); the lock is released in
 // both processes. For core/mesh/meshing_child.h.

@@ -7,7 +7,7 @@
 // ε = 1e-4, f = 0.5) can defeat the fast solver's path from rest, while a path through smaller
 // f (t = 0 is frictionless, hence convex) reaches the tolerance. Which path works is found by
 // trying, not known in advance, so it is an option (SolverOptions::friction_path), never a
-// default: the README's known limitations give the measurements.
+// default (docs/commands.md has the dovetail's example).
 #include <vector>
 
 #include "core/solvers/condensed_interface.h"

@@ -241,36 +241,21 @@ std::pair<SceneRecord, SolveReport> solve_scene(const SolveInput& in) {
   return {std::move(s.record), std::move(s.report)};
 }
 
-nlohmann::json counts_json(const StatusCount& c) { return {{"gap", c.gap}, {"slide", c.slide}, {"stick", c.stick}}; }
-
 // `solve --json`: the scene in one line, for scripts. Non-finite numbers become null.
 std::string summary_line(const SolveInput& in, const SceneRecord& record, const SolveReport& report) {
-  nlohmann::json counts;
-  for (const InterfaceFields& f : record.interfaces) counts[f.name] = counts_json(f.counts());
-  if (!record.combined_status.empty()) {
-    std::vector<NodeStatus> combined;
-    for (int v : record.combined_status) combined.push_back(static_cast<NodeStatus>(v));
-    counts["combined"] = counts_json(count_statuses(combined));
-  }
+  const nlohmann::json counts = status_counts_json(record);
   const double setup = record.numbers.at("setup_time_s");
   nlohmann::json j = {
       {"scene", record.id},
       {"case", in.case_name},
       {"mode", in.mode},
       {"law_case", in.law_case},
-      {"solver", report.solver},
-      {"solver_method", report.method},
-      {"converged", report.converged},
-      {"stop_cause", to_string(report.stop_cause)},
-      {"iterations", report.iterations},
-      {"residual", {{"value", report.residual.value()}, {"interface", report.residual.interface},
-                    {"bulk", report.residual.bulk}, {"tolerance", report.tolerance},
-                    {"roundoff_floor", report.residual.floor()}}},
       {"counts", counts},
       {"times_s", {{"solve", report.wall_time_s}, {"setup", setup}}},
       {"out", in.out.empty() ? nullptr : nlohmann::json(in.out)},
       {"vtu", in.vtu.empty() ? nullptr : nlohmann::json(in.vtu)},
   };
+  j.update(solve_report_json(report));
   if (nlohmann::json film = film_json(record); !film.is_null()) j["film"] = std::move(film);
   return j.dump();
 }
@@ -352,14 +337,14 @@ CLI::App* declare_solve(CLI::App& thinlayer, SolveArgs& a) {
   c->add_option("--friction-path", a.friction_path,
                 "fast solver: solve first with these Coulomb coefficients, in order, each\n"
                 "solve warm started from the one before, then with the scene's own f, which\n"
-                "alone decides convergence (a continuation for hard layer scenes; README,\n"
-                "known limitations). Each Fi finite and >= 0; the scene's f must be > 0.")
+                "alone decides convergence (a continuation for hard layer scenes; the\n"
+                "dovetail's example in docs/commands.md). Each Fi finite and >= 0; the scene's f must be > 0.")
       ->type_name("F1,F2,...")->check(number_list("friction-path"))->group(both);
   declare_solver_options(*c, a);
 
   c->add_option("--scene", a.scene,
-                "a JSON scene naming the physical groups of a gmsh .geo or .msh (README,\n"
-                "\"Your own joint\"; cases/lap_joint/lap_joint.json); with it only --mode,\n"
+                "a JSON scene naming the physical groups of a gmsh .geo or .msh\n"
+                "(docs/joints.md; cases/lap_joint/lap_joint.json); with it only --mode,\n"
                 "--eps (mm), --out, --vtu, --json, --solver, --tolerance, --max-iterations,\n"
                 "--omega, --verbose, --force, --max-nodes and --mesh-timeout apply")
       ->type_name("FILE.json")->group("Scene files (your own joint)");

@@ -210,8 +210,8 @@ std::vector<Check> run_lap_joint_study(bool verbose, H5Writer* out) {
 // The engineer's validity map of the shipped joints (SPEC 3 S3) on a small grid, so that verify stays
 // fast (4 s of its time on this machine): t/L 1e-2 and 1e-1 at nu_g 0.45, by E_g/E_a 1e-3 and 1e-1 on
 // the double lap (the map's corners), at E_g/E_a 1e-1 (an epoxy on aluminium) on the stepped lap and
-// the lap joint. The full map (7 x 7 x 2 cells) is `study validity-map --scene` (README, "The
-// engineer's validity map").
+// the lap joint. The full map (7 x 7 x 2 cells) is `study validity-map --scene` (docs/studies.md,
+// "The engineer's validity map").
 std::vector<Check> run_validity_maps(int threads, bool verbose, H5Writer* out) {
   std::vector<Check> checks;
   for (const char* joint : {"double_lap", "stepped_lap", "lap_joint"}) {
@@ -293,7 +293,7 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
             ->type_name("F1,F2,...")->check(number_list("friction-path")));
   group(c.add_option("--scene", a.scene,
                      "convergence, validity: S2 (and S3) on your own joint, a scene file\n"
-                     "(README, \"Your own joint\")")
+                     "(docs/joints.md)")
             ->type_name("FILE.json"));
   group(c.add_option("--thickness-ratios", a.thickness_ratios,
                      "validity-map: the glue's thicknesses t/L (default 1e-3 ... 1e-1, 3 a decade)")
@@ -354,7 +354,7 @@ CLI::App* declare_study(CLI::App& thinlayer, StudyArgs& a) {
       "               paper's 3 % / 30x rule's cost; spread over MPI ranks\n"
       "\n"
       "Your own joint: study convergence --scene FILE.json, study validity --scene FILE.json run S2\n"
-      "and S3 on a scene file (README, \"Your own joint\"); options --out, --eps LIST (mm), --tolerance\n"
+      "and S3 on a scene file (docs/joints.md, docs/studies.md); options --out, --eps LIST (mm), --tolerance\n"
       "(default 1e-10 there), --threads, --quiet, --max-nodes, --mesh-timeout, --peak-distance D (mm) and\n"
       "(validity) --bisection-steps. The verdict is one line per quantity: the reactions, the adherents'\n"
       "displacements, and the peak peel and shear at d from each bondline end.");

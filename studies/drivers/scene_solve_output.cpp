@@ -100,11 +100,18 @@ void print_scene_solve(const SceneFileBulk& bulk, const std::string& mode, doubl
   std::printf("  reactions + loads = (%.3g, %.3g) %s\n", sum.x(), sum.y(), force.c_str());
 }
 
-std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene_file, const std::string& mode,
-                             const SceneFileScene& s, const std::string& out, const std::string& vtu,
-                             const ClassificationCost* cost) {
-  const SceneRecord& record = s.record;
-  const SolveReport& report = s.report;
+nlohmann::json solve_report_json(const SolveReport& report) {
+  return {{"solver", report.solver},
+          {"solver_method", report.method},
+          {"converged", report.converged},
+          {"stop_cause", to_string(report.stop_cause)},
+          {"iterations", report.iterations},
+          {"residual", {{"value", report.residual.value()}, {"interface", report.residual.interface},
+                        {"bulk", report.residual.bulk}, {"tolerance", report.tolerance},
+                        {"roundoff_floor", report.residual.floor()}}}};
+}
+
+nlohmann::json status_counts_json(const SceneRecord& record) {
   nlohmann::json counts;
   for (const InterfaceFields& f : record.interfaces) counts[f.name] = counts_json(f.counts());
   if (!record.combined_status.empty()) {
@@ -112,6 +119,15 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
     for (int v : record.combined_status) combined.push_back(static_cast<NodeStatus>(v));
     counts["combined"] = counts_json(count_statuses(combined));
   }
+  return counts;
+}
+
+std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene_file, const std::string& mode,
+                             const SceneFileScene& s, const std::string& out, const std::string& vtu,
+                             const ClassificationCost* cost) {
+  const SceneRecord& record = s.record;
+  const SolveReport& report = s.report;
+  const nlohmann::json counts = status_counts_json(record);
   nlohmann::json reactions = nlohmann::json::object(), loads = nlohmann::json::object();
   for (const auto& [name, R] : record.reactions) reactions[name] = vector_json(R);
   for (const auto& [name, F] : s.loads) loads[name] = vector_json(F);
@@ -122,13 +138,6 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
       {"mode", mode},
       {"law_case", record.text.at("law_case")},
       {"units", bulk.spec().units.name()},
-      {"solver", report.solver},
-      {"solver_method", report.method},
-      {"converged", report.converged},
-      {"stop_cause", to_string(report.stop_cause)},
-      {"iterations", report.iterations},
-      {"residual", {{"value", report.residual.value()}, {"interface", report.residual.interface},
-                    {"bulk", report.residual.bulk}, {"tolerance", report.tolerance}}},
       {"counts", counts},
       {"carries_load", s.carries_load},
       {"carried", {{"bondline_force", s.bondline_force}, {"force_scale", s.force_scale}}},
@@ -140,6 +149,7 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
       {"out", out.empty() ? nullptr : nlohmann::json(out)},
       {"vtu", vtu.empty() ? nullptr : nlohmann::json(vtu)},
   };
+  j.update(solve_report_json(report));
   // Each bondline's law (K = inf is null in JSON) and what the paper's rule would choose (SPEC 1.3).
   nlohmann::json bondlines = nlohmann::json::array();
   for (const SceneBondline& b : s.bondlines)

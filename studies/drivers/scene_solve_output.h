@@ -29,6 +29,15 @@ std::string scene_solve_json(const SceneFileBulk& bulk, const std::string& scene
 // Throws std::invalid_argument.
 void check_scene_eps(const SceneFileBulk& bulk, const std::string& mode, double eps);
 
+// --json's account of a solve: solver, solver_method, converged, stop_cause, iterations and the
+// residual (value, its interface and bulk parts, the tolerance, the round-off floor); both forms
+// of `solve` write it.
+nlohmann::json solve_report_json(const SolveReport& report);
+
+// --json's "counts": {gap, slide, stick} of each face of each bondline, and of the layer's combined
+// statuses where the record has them; both forms of `solve` write it.
+nlohmann::json status_counts_json(const SceneRecord& record);
+
 // --json's "film" object of a layer scene's record (SPEC §1.5: slip_over_h, strain_max), null for
 // any other record; both forms of `solve` write it.
 nlohmann::json film_json(const SceneRecord& record);

@@ -9,7 +9,7 @@
 // §1.5), both selections converged.
 //
 // Case (e) at 5e-4 is also solved with selective integration, both selections: there the two
-// selections found two answers (README, issue 13), 1.2e-4 apart in the reaction; shown, not
+// selections found two answers (docs/solvers.md, "A second solution, and its cause"), 1.2e-4 apart in the reaction; shown, not
 // checked (cases/layer_quadrature.h: the free zigzag makes the problem nearly singular).
 #include <string>
 #include <utility>

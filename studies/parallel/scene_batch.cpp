@@ -133,7 +133,7 @@ void SceneBatch::throw_first_failure(const std::vector<Task>& tasks, const std::
 
 // THINLAYER_SCENE_TIMES=FILE appends one tab-separated line per scene (tag, batch number in
 // this process, label, cost estimate, seconds, rank): the measurements behind the cost
-// estimates and the README's scaling figures (scripts/project_scaling.py). Rank 0 writes it
+// estimates and the scaling figures of docs/studies.md (scripts/project_scaling.py). Rank 0 writes it
 // like every other output (SPEC §4, core/io/output_target.h): the old lines and the new ones to
 // a temporary file, renamed onto the target; a FIFO or a device is refused (exit status 2).
 void SceneBatch::log_times(const std::vector<Task>& tasks, const std::vector<Outcome>& outcomes,

@@ -24,7 +24,8 @@ void on_root(const std::function<void()>& run);
 // process); null on the other ranks (and for an empty dir).
 std::unique_ptr<H5Writer> open_results_on_root(const std::string& dir, const OutputRules& rules = {});
 
-// A study that is not spread (the timing study measures time; see README for the others):
+// A study that is not spread (the timing study measures time; docs/studies.md, "Studies over MPI
+// ranks", for the others):
 // rank 0 runs it while the other ranks wait, idle, and return no checks. `why` ends the
 // message that says so.
 std::vector<Check> on_root_alone(const std::string& study, const std::string& why,
