@@ -12,6 +12,7 @@
 
 #include "cases/scene/scene_mesh_child.h"
 #include "core/io/output_ownership.h"
+#include "core/mesh/meshing_child.h"
 #include "core/io/output_target.h"
 #include "core/io/vtu_writer.h"
 #include "studies/cli/options.h"
@@ -31,7 +32,6 @@ namespace {
 struct SceneSolveInput : SolveRun {
   std::string scene, mode = "limit";
   std::size_t max_nodes = SceneSpec{}.max_nodes;
-  double mesh_timeout_s = SceneSpec{}.mesh_timeout_s;
   double eps = 0;  // 0: an engineer's glue at its own thickness (checked with the scene)
 };
 
@@ -47,12 +47,6 @@ std::size_t max_nodes(const CLI::App& c, long long given_value) {
   return static_cast<std::size_t>(given_value);
 }
 
-// --mesh-timeout S (0 < S <= 1e6 s), or the default.
-double mesh_timeout(const CLI::App& c, double given_value) {
-  if (!given(c, "mesh-timeout")) return SceneSpec{}.mesh_timeout_s;
-  if (!(given_value > 0) || !(given_value <= 1e6)) throw std::invalid_argument("--mesh-timeout must be in (0, 1e6] seconds");
-  return given_value;
-}
 
 SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   require_only(c, scene_solve_options, "a scene file (--scene)");
@@ -60,7 +54,7 @@ SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   in.scene = a.scene;
   if (in.scene.empty()) throw std::invalid_argument("--scene needs a file");
   in.max_nodes = max_nodes(c, a.max_nodes);
-  in.mesh_timeout_s = mesh_timeout(c, a.mesh_timeout);
+  start_mesh_clock(c, a.mesh_timeout);
   in.mode = given(c, "mode") ? a.mode : "limit";
   if (given(c, "eps")) {  // without it, an engineer's glue's own thickness (checked with the scene)
     in.eps = a.eps;
@@ -87,6 +81,12 @@ int fail(const std::string& command, const std::exception& e, int status) {
 
 }  // namespace
 
+void start_mesh_clock(const CLI::App& c, double given_value) {
+  if (given(c, "mesh-timeout") && !(given_value > 0 && given_value <= 1e6))
+    throw std::invalid_argument("--mesh-timeout must be in (0, 1e6] seconds");
+  set_meshing_wall_clock(given(c, "mesh-timeout") ? given_value : default_mesh_timeout_s);
+}
+
 int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   SceneSolveInput in;
   std::vector<InputFile> inputs;
@@ -97,7 +97,6 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     RunPhase reading("reading the scene file " + in.scene);
     SceneSpec spec = read_scene_spec(in.scene);
     spec.max_nodes = in.max_nodes;
-    spec.mesh_timeout_s = in.mesh_timeout_s;
     // The outputs first: never one of the run's inputs nor each other, never a file thinlayer did
     // not write (unless --force), and writable; all before any work.
     inputs = scene_inputs(spec);
@@ -205,7 +204,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     RunPhase reading("reading the scene file " + scene);
     SceneSpec spec = read_scene_spec(scene);
     spec.max_nodes = max_nodes(c, a.max_nodes);
-    spec.mesh_timeout_s = mesh_timeout(c, a.mesh_timeout);
+    start_mesh_clock(c, a.mesh_timeout);
     rules = {scene_inputs(spec), a.force};
     if (!out_dir.empty()) {  // the study's files in DIR, before the study (its report checks its own folder)
       check_distinct_outputs({{"results.h5", out_dir + "/results.h5"}, {"bondline_fields.csv", out_dir + "/bondline_fields.csv"}},

@@ -369,7 +369,8 @@ CLI::App* declare_solve(CLI::App& thinlayer, SolveArgs& a) {
       ->type_name("N")->transform(integer("max-nodes"))->group("Scene files (your own joint)");
   c->add_option("--mesh-timeout", a.mesh_timeout,
                 "stop gmsh after S seconds of wall clock, reading and meshing the scene's\n"
-                "geometry (default 600; a Sleep or a loop in a .geo ends there)")
+                "geometry: all the meshing of the command together (default 600; a loop\n"
+                "in a .geo ends there)")
       ->type_name("S")->check(decimal("mesh-timeout"))->group("Scene files (your own joint)");
   c->footer(
       "Numbers are decimal (1e-3, 0.5, inf where a value may be infinite); no hex, no blanks.\n"

@@ -308,8 +308,8 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
                      "(estimated from the geometry and mesh_size; default 2000000)")
             ->type_name("N")->transform(integer("max-nodes")));
   group(c.add_option("--mesh-timeout", a.mesh_timeout,
-                     "with --scene: stop gmsh after S seconds of wall clock on each mesh\n"
-                     "(default 600)")
+                     "with --scene and validity-map: stop gmsh after S seconds of wall clock\n"
+                     "for all the meshing of the command together, not each mesh (default 600)")
             ->type_name("S")->check(decimal("mesh-timeout")));
 }
 

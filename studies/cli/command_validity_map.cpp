@@ -8,6 +8,7 @@
 
 #include "cases/scene/scene_mesh_child.h"
 #include "core/io/output_ownership.h"
+#include "studies/cli/command_scene.h"
 #include "studies/cli/options.h"
 #include "studies/cli/report_runner.h"
 #include "studies/cli/results_file.h"
@@ -39,9 +40,10 @@ int command_study_validity_map(const CLI::App& c, const StudyArgs& a) {
   std::string out_dir, name;
   std::unique_ptr<SceneFileBulk> bulk;
   try {
-    require_only(c, {"scene", "out", "quiet", "force", "threads", "tolerance", "max-nodes", "peak-distance",
-                     "thickness-ratios", "modulus-ratios", "poisson"},
+    require_only(c, {"scene", "out", "quiet", "force", "threads", "tolerance", "max-nodes", "mesh-timeout",
+                     "peak-distance", "thickness-ratios", "modulus-ratios", "poisson"},
                  "study validity-map");
+    start_mesh_clock(c, a.mesh_timeout);
     if (!given(c, "scene")) throw std::invalid_argument("study validity-map needs --scene FILE.json (the joint to map)");
     options.verbose = !a.quiet;
     if (given(c, "tolerance")) options.tolerance = a.tolerance;
