@@ -18,6 +18,7 @@
 #include "studies/cli/options.h"
 #include "studies/cli/results_file.h"
 #include "studies/tools/run_phase.h"
+#include "studies/cli/report_runner.h"
 #include "studies/cli/scene_report.h"
 #include "studies/drivers/classification_cost.h"
 #include "studies/drivers/scene_file_study.h"
@@ -75,7 +76,7 @@ void write_results(const std::string& path, const SceneFileScene& scene, const S
 
 // One line on stderr, the exit status of its kind (out of memory: 2, naming the phase).
 int fail(const std::string& command, const std::exception& e, int status) {
-  std::cerr << "thinlayer " << command << ": " << failure_text(e) << "\n";
+  print_message(command, failure_text(e));
   return dynamic_cast<const std::bad_alloc*>(&e) ? 2 : status;
 }
 
@@ -113,7 +114,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     load_path = scene_load_path(*bulk, in.mode, in.eps);
     if (!load_path.no_path.empty()) throw std::invalid_argument(load_path.no_path);
     if (const FrictionHold* over = load_path.exceeded()) {
-      std::cerr << "thinlayer solve: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+      print_message("solve", friction_line(*over, bulk->spec().units.force) + "; nothing solved");
       return 1;
     }
   } catch (const std::invalid_argument& e) {
@@ -142,7 +143,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     phase.emplace("writing " + in.out);
     if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force}, estimate ? &*estimate : nullptr);
     phase.emplace("writing " + in.vtu);
-    if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
+    if (!in.vtu.empty()) write_vtu(in.vtu, s.record, {inputs, in.force});
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
     if (in.json) {
@@ -150,15 +151,15 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
       if (estimate) j["limit_error_estimate"] = limit_error_estimate_json(*estimate);
       std::printf("%s\n", j.dump().c_str());
     }
-    if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
-    if (const std::string w = film_warning(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
-    if (const std::string w = displacement_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
-    if (const std::string w = limit_slip_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = no_load_warning(s); !w.empty()) print_message("solve", w);
+    if (const std::string w = film_warning(s.record); !w.empty()) print_message("solve", w);
+    if (const std::string w = displacement_warning_line(s.record); !w.empty()) print_message("solve", w);
+    if (const std::string w = limit_slip_warning_line(s.record); !w.empty()) print_message("solve", w);
     if (!s.report.converged) {
-      std::cerr << "thinlayer solve: " << s.report.message << "\n";
+      print_message("solve", s.report.message);
       // What friction alone had to hold, where it did (the capacity was estimated within the load).
       for (const FrictionHold& h : load_path.friction)
-        std::cerr << "thinlayer solve: " << friction_line(h, bulk->spec().units.force) << "\n";
+        print_message("solve", friction_line(h, bulk->spec().units.force));
       return 1;
     }
     return 0;
@@ -211,6 +212,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
                              rules.inputs);
       check_replaceable(out_dir + "/results.h5", OutputKind::Results, rules.inputs, rules.force);
       check_replaceable(out_dir + "/bondline_fields.csv", OutputKind::Csv, rules.inputs, rules.force);
+      check_report_folder(out_dir + "/report");
     }
     if (given(c, "eps")) {
       spec.eps = a.eps.values;
@@ -228,7 +230,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     const LoadPath path = scene_load_path(*bulk, "limit", 0.0);
     if (!path.no_path.empty()) throw std::invalid_argument(path.no_path);
     if (const FrictionHold* over = path.exceeded()) {
-      std::cerr << "thinlayer study: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+      print_message("study", friction_line(*over, bulk->spec().units.force) + "; nothing solved");
       return 1;
     }
   } catch (const std::exception& e) {

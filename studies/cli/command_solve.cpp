@@ -385,7 +385,7 @@ int command_solve(const CLI::App& command, const SolveArgs& args) {
   try {
     in = parse_solve(command, args);
   } catch (const std::exception& e) {
-    std::cerr << "thinlayer solve: " << e.what() << "\n";
+    print_message("solve", e.what());
     return 2;
   }
   text_out = in.json ? nullptr : stdout;
@@ -403,27 +403,27 @@ int command_solve(const CLI::App& command, const SolveArgs& args) {
       say("  wrote %s\n", in.out.c_str());
     }
     if (!in.vtu.empty()) {
-      write_vtu(in.vtu, record);
+      write_vtu(in.vtu, record, {{}, in.force});
       say("  wrote %s\n", in.vtu.c_str());
     }
     if (in.json) std::printf("%s\n", summary_line(in, record, report).c_str());
-    if (const std::string w = film_warning(record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = film_warning(record); !w.empty()) print_message("solve", w);
     if (!report.converged) {
-      std::cerr << "thinlayer solve: " << report.message << "\n";
+      print_message("solve", report.message);
       return 1;
     }
     return 0;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "thinlayer solve: " << e.what() << "\n";
+    print_message("solve", e.what());
     return 2;
   } catch (const OutputError& e) {
-    std::cerr << "thinlayer solve: " << e.what() << "\n";
+    print_message("solve", e.what());
     return 2;
   } catch (const std::bad_alloc& e) {
-    std::cerr << "thinlayer solve: " << failure_text(e) << "\n";
+    print_message("solve", failure_text(e));
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "thinlayer solve: " << e.what() << "\n";
+    print_message("solve", e.what());
     return 1;
   }
 }

@@ -15,6 +15,7 @@
 #include "studies/drivers/validity_map.h"
 #include "studies/parallel/process_group.h"
 #include "studies/parallel/spread_command.h"
+#include "studies/tools/run_phase.h"
 #include "studies/tools/format.h"
 
 namespace thinlayer {
@@ -74,10 +75,11 @@ int command_study_validity_map(const CLI::App& c, const StudyArgs& a) {
     if (!out_dir.empty() && is_root()) {  // the map's files in DIR, before the map
       check_replaceable(out_dir + "/results.h5", OutputKind::Results, rules.inputs, rules.force);
       check_replaceable(out_dir + "/validity_map_" + name + ".csv", OutputKind::Csv, rules.inputs, rules.force);
+      check_report_folder(out_dir + "/report");
     }
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
   } catch (const std::exception& e) {
-    if (is_root()) std::cerr << "thinlayer study: " << e.what() << "\n";
+    if (is_root()) print_message("study", e.what());
     return 2;
   }
   try {
@@ -96,11 +98,7 @@ int command_study_validity_map(const CLI::App& c, const StudyArgs& a) {
       write_checks(*out, r.checks);
       out->commit();
       std::printf("wrote %s and %s/validity_map_%s.csv\n", out->path().c_str(), out_dir.c_str(), name.c_str());
-      try {
-        run_report(out->path(), out_dir + "/report");
-      } catch (const std::runtime_error& e) {
-        std::cerr << "thinlayer study: the report was not written: " << e.what() << "\n";
-      }
+      run_report_keeping(out->path(), out_dir + "/report", {out->path(), out_dir + "/validity_map_" + name + ".csv"});
     });
     return command_status(failed == 0 ? 0 : 1);
   } catch (const std::exception& e) {
