@@ -69,6 +69,15 @@ def refuse_other_files(f, path):
     any of its values is read. thinlayer writes none of these. Every member of every group is
     looked at as a link (get(..., getlink=True)), never followed unless it is a hard link; each
     group and dataset once (a hard link back to a parent group is no loop)."""
+    try:
+        walk_links(f, path)
+    except ReportError:
+        raise
+    except Exception as e:  # h5py's errors on a damaged file: OSError, KeyError, ValueError, ...
+        raise ReportError(f"{path}: not a readable results file ({shown(first_line(e))})") from None
+
+
+def walk_links(f, path):
     seen = set()
     groups = [(f, "/")]
     while groups:
@@ -82,6 +91,8 @@ def refuse_other_files(f, path):
             if not isinstance(link, h5py.HardLink):
                 continue  # a soft link names an object of this file, looked at where it lies
             obj = node.get(name)
+            if obj is None:
+                raise ReportError(f"{path}: {shown(member)} cannot be read (a damaged results file?)")
             address = h5py.h5o.get_info(obj.id).addr
             if address in seen:
                 continue

@@ -384,8 +384,8 @@ def outputs(s):
     p = subprocess.Popen([THINLAYER, "study", "validity", "--scene", slow, "--out", "NEW"], cwd=f, env=ENV,
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     deadline = time.monotonic() + 30
-    while time.monotonic() < deadline and len(session_processes(p.pid)) < 2:
-        time.sleep(0.02)
+    while time.monotonic() < deadline and (len(session_processes(p.pid)) < 2 or not os.listdir(TMP)):
+        time.sleep(0.02)  # the meshing child and its staging folder (not the report folder's check)
     check("SIGTERM while meshing", len(session_processes(p.pid)) >= 2 and os.listdir(TMP), "no meshing child, no staging")
     p.send_signal(signal.SIGTERM)
     status = p.wait(timeout=30)

@@ -114,6 +114,10 @@ class SourceReader {
       if (made_.insert(folder).second) out_.folders.push_back(folder);
     }
     stack.push_back(last);
+    if (is_side_file(last))
+      throw InputError(prefix + "a file named '*" + std::string(side_file_suffix) + "': gmsh merges '<file>" +
+                       side_file_suffix + "' as a script after every file it merges, unasked, so no file of a scene may "
+                       "end in " + side_file_suffix);
     return join(stack);
   }
 
@@ -124,10 +128,6 @@ class SourceReader {
   // Reads the file once (a regular file inside the folder, within its bound), checks it as a
   // `kind`, and follows what a script names.
   void add(const std::string& staged, SceneSource::Kind kind, const std::string& prefix) {
-    if (is_side_file(staged))
-      throw InputError(prefix + "a file named '*" + std::string(side_file_suffix) + "': gmsh merges '<file>" +
-                       side_file_suffix + "' as a script after every file it merges, unasked, so no file of a scene may "
-                       "end in " + side_file_suffix);
     auto [known, added] = index_.emplace(staged, out_.files.size());
     if (added) {
       if (out_.files.size() == max_source_files)
