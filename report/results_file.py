@@ -78,7 +78,7 @@ def refuse_other_files(f, path):
 
 
 def walk_links(f, path):
-    seen = set()
+    seen = {h5py.h5o.get_info(f.id).addr}
     groups = [(f, "/")]
     while groups:
         node, where = groups.pop()

@@ -220,8 +220,11 @@ void H5Writer::replace_only_under(OutputRules rules) { rules_ = std::move(rules)
 void H5Writer::write_beside(const std::string& name, OutputKind kind, const std::string& text) const {
   const std::string folder = std::filesystem::path(path_).parent_path().string();
   const std::string path = (folder.empty() ? std::string(".") : folder) + "/" + name;
-  if (rules_) write_output_text(path, kind, *rules_, text);
-  else write_text_atomically(path, text);
+  if (!rules_) return write_text_atomically(path, text);
+  // Written only while this file itself may still be: a results file refused at its commit then
+  // leaves no new file beside it.
+  check_replaceable(path_, OutputKind::Results, rules_->inputs, rules_->force);
+  write_output_text(path, kind, *rules_, text);
 }
 
 std::int64_t H5Writer::file() const {
