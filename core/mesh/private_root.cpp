@@ -39,7 +39,8 @@ void make_path_beneath(const std::string& base, const std::string& path) {
   std::string made = base;
   for (std::size_t at = 1; at < path.size();) {
     const std::size_t slash = std::min(path.find('/', at), path.size());
-    made += "/" + path.substr(at, slash - at);
+    made.push_back('/');
+    made.append(path, at, slash - at);
     if (::mkdir(made.c_str(), 0755) != 0 && errno != EEXIST) fail("mkdir " + made);
     at = slash + 1;
   }
