@@ -59,7 +59,7 @@ std::string run_in_meshing_child(const std::function<std::string()>& work, const
 
 // One wall clock for all the meshing of a command (SPEC §4; --mesh-timeout, default 600 s): each
 // run_in_meshing_child draws the child's wall time from it, and is stopped when it runs out (a
-// validity map meshes 6 to 7 geometries: its meshing together stays within the limit, not each).
+// scene study meshes its geometry 4 times: together they stay within the limit, not each).
 // Children run side by side by threads each count their own time. A run that finds it spent
 // throws at once. Setting it starts it again, full.
 constexpr double default_mesh_timeout_s = 600;
