@@ -21,7 +21,6 @@ and python3-h5py.)
 """
 
 import os
-import re
 import shutil
 import signal
 import sys
@@ -53,6 +52,7 @@ from checks import load_checks  # noqa: E402
 from context import Context  # noqa: E402
 from html_parts import page, section  # noqa: E402
 from plotting import FigureWriter  # noqa: E402
+from report_folder import JOINT_TITLE, MAP_TITLE, TITLE, FolderError, check_folder  # noqa: E402
 from results_file import ReportError, open_results  # noqa: E402
 from scenes import index_scenes  # noqa: E402
 
@@ -156,29 +156,6 @@ def write_report(f, results_path, out_dir):
         out.write(html)
 
 
-TITLE = "thinlayer verification report"
-JOINT_TITLE = "thinlayer joint report"
-MAP_TITLE = "thinlayer validity map"
-
-
-def previous_figures(index_path):
-    """The figures an earlier report in this folder wrote (named in its index.html), or
-    None when there is no earlier report. A file there that this script did not write is
-    refused."""
-    if not os.path.lexists(index_path):
-        return None
-    try:
-        with open(index_path, encoding="utf-8") as page_file:
-            html = page_file.read()
-    except (OSError, UnicodeDecodeError) as e:
-        raise ReportError(f"{index_path}: exists and is not a report this script wrote ({e}); "
-                          f"move it or choose another folder") from None
-    if f"<title>{TITLE}</title>" not in html and not re.search(f"<title>({JOINT_TITLE}|{MAP_TITLE}): [^<]*</title>", html):
-        raise ReportError(f"{index_path}: exists and is not a report this script wrote; "
-                          f"move it or choose another folder")
-    return set(re.findall(r'<img src="figures/([^"/]+\.png)"', html))
-
-
 def check_input_is_safe(results_path, out_dir):
     """The report never writes over its own input."""
     source = os.path.realpath(results_path)
@@ -211,11 +188,10 @@ def install(built, out_dir, previous):
 
 def make_report(results_path, out_dir):
     out_dir = os.path.abspath(out_dir)
-    if os.path.lexists(out_dir) and not os.path.isdir(out_dir):
-        raise ReportError(f"{out_dir}: exists and is not a directory")
+    check_folder(out_dir)
     with open_results(results_path) as f:  # refuses a bad file before anything is written
         check_input_is_safe(results_path, out_dir)
-        previous = previous_figures(os.path.join(out_dir, "index.html"))
+        previous = check_folder(out_dir)
         created = not os.path.lexists(out_dir)
         # The half-built report's name is known before it exists, so that a signal arriving just
         # after it is made (the hostile matrix kills the report as soon as it appears) finds it.
@@ -263,7 +239,7 @@ def main(argv):
     except Interrupted as e:  # cleaned up; now die of the signal, as the caller expects
         signal.signal(e.signum, signal.SIG_DFL)
         os.kill(os.getpid(), e.signum)
-    except ReportError as e:
+    except (ReportError, FolderError) as e:
         print(f"make_report: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except SectionError as e:

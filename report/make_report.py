@@ -2,8 +2,11 @@
 """The thinlayer verification report: an HTML page with figures, read only from a results file.
 
     /usr/bin/python3 report/make_report.py RESULTS.h5 OUT_DIR [--time-limit SECONDS]
+    /usr/bin/python3 report/make_report.py --check-folder OUT_DIR
 
 writes OUT_DIR/index.html and OUT_DIR/figures/*.png, and nothing else (build_report.py says how).
+With --check-folder it writes nothing: it says whether OUT_DIR would be refused (report_folder.py),
+so that `thinlayer` refuses it before a study's work, not after.
 
 A results file handed to the report is untrusted input (SPEC §4): a damaged one has crashed
 HDF5 inside h5py (a signal, which no Python code can catch) or kept it looping. So this command
@@ -22,7 +25,7 @@ import subprocess
 import sys
 
 BUILDER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "build_report.py")
-USAGE = "usage: make_report.py RESULTS.h5 OUT_DIR [--time-limit SECONDS]"
+USAGE = "usage: make_report.py RESULTS.h5 OUT_DIR [--time-limit SECONDS] | --check-folder OUT_DIR"
 EXIT_BAD_INPUT = 2
 DEFAULT_TIME_LIMIT_S = 1800.0
 
@@ -64,7 +67,25 @@ def remove_leftovers(child_pid, out_dir, made_out_dir):
             pass
 
 
+def check_folder_only(argv):
+    """--check-folder OUT_DIR: exit 0 if a report may be written there, else one line and exit 2."""
+    sys.dont_write_bytecode = True
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from report_folder import FolderError, check_folder
+    if len(argv) != 3:
+        print(f"make_report: --check-folder takes one folder; {USAGE}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    try:
+        check_folder(argv[2])
+    except FolderError as e:
+        print(f"make_report: {e}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    return 0
+
+
 def main(argv):
+    if len(argv) >= 2 and argv[1] == "--check-folder":
+        return check_folder_only(argv)
     try:
         args, limit = time_limit(argv[1:])
     except ValueError as e:

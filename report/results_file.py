@@ -1,8 +1,9 @@
 """Opening a thinlayer results file (SPEC §4) and reading its values as plain Python.
 
 The report reads nothing but this file, so everything that decides whether the file can be
-read at all lives here: a missing, unreadable, foreign or older file is refused with one
-line (`ReportError`) before anything is written.
+read at all lives here: a missing, unreadable, foreign or older file, or one that would make
+HDF5 read another file (refuse_other_files), is refused with one line (`ReportError`) before
+anything is written.
 """
 
 import os
@@ -45,10 +46,74 @@ def open_results(path):
         raise ReportError(f"{path}: not a readable HDF5 file ({first_line(e)})") from None
     try:
         check_layout(f, path)
+        refuse_other_files(f, path)
     except ReportError:
         f.close()
         raise
     return f
+
+
+def shown(value):
+    """A value from the file as a message shows it: one line, control characters (C0, DEL, C1,
+    line and paragraph separators, bidirectional overrides) as \\uXXXX -- the rule of thinlayer's
+    messages (core/io/shown_text.h)."""
+    return "".join(f"\\u{ord(c):04x}" if ord(c) < 0x20 or 0x7f <= ord(c) <= 0x9f or c in "\u2028\u2029"
+                   or 0x202a <= ord(c) <= 0x202e or 0x2066 <= ord(c) <= 0x2069 else c for c in str(value))
+
+
+def refuse_other_files(f, path):
+    """The report opens the one file it is given (SPEC §4): a results file that would make HDF5
+    read another -- an external link (a group member that names an object of another file), a
+    dataset with external storage (its bytes in other files: /etc/passwd read as /checks/got) or a
+    virtual dataset (mapped from other datasets, of this file or others) -- is refused before
+    any of its values is read. thinlayer writes none of these. Every member of every group is
+    looked at as a link (get(..., getlink=True)), never followed unless it is a hard link; each
+    group and dataset once (a hard link back to a parent group is no loop)."""
+    try:
+        walk_links(f, path)
+    except ReportError:
+        raise
+    except Exception as e:  # h5py's errors on a damaged file: OSError, KeyError, ValueError, ...
+        raise ReportError(f"{path}: not a readable results file ({shown(first_line(e))})") from None
+
+
+def walk_links(f, path):
+    seen = {h5py.h5o.get_info(f.id).addr}
+    groups = [(f, "/")]
+    while groups:
+        node, where = groups.pop()
+        for name in node:
+            member = f"{where.rstrip('/')}/{name}"
+            link = node.get(name, getlink=True)
+            if isinstance(link, h5py.ExternalLink):
+                raise ReportError(f"{path}: {shown(member)} is an external link to '{shown(link.filename)}': the report reads "
+                                  f"this file only, and thinlayer writes no such link")
+            if not isinstance(link, h5py.HardLink):
+                continue  # a soft link names an object of this file, looked at where it lies
+            obj = node.get(name)
+            if obj is None:
+                raise ReportError(f"{path}: {shown(member)} cannot be read (a damaged results file?)")
+            address = h5py.h5o.get_info(obj.id).addr
+            if address in seen:
+                continue
+            seen.add(address)
+            if isinstance(obj, h5py.Group):
+                groups.append((obj, member))
+            elif isinstance(obj, h5py.Dataset):
+                refuse_other_storage(obj, member, path)
+
+
+def refuse_other_storage(dataset, member, path):
+    """A dataset whose bytes lie in other files (external storage) or other datasets (virtual)."""
+    plist = dataset.id.get_create_plist()
+    if plist.get_external_count() > 0:
+        name = plist.get_external(0)[0]
+        name = name.decode("utf-8", "replace") if isinstance(name, bytes) else str(name)
+        raise ReportError(f"{path}: {shown(member)} keeps its values in another file ('{shown(name)}', external storage): the "
+                          f"report reads this file only, and thinlayer writes no such dataset")
+    if plist.get_layout() == h5py.h5d.VIRTUAL:
+        raise ReportError(f"{path}: {shown(member)} is a virtual dataset (its values mapped from other datasets, of "
+                          f"this file or others): the report reads this file only, and thinlayer writes none")
 
 
 def check_layout(f, path):

@@ -71,6 +71,41 @@ TEST(GeoScan, EveryStatementThatRunsWritesStopsOrMeshesIsRefusedWithItsLine) {
   }
 }
 
+// What a scene would learn of the machine it runs on (the user's environment, the file system,
+// the machine's paths, clock and memory): refused, wherever it stands.
+TEST(GeoScan, WhatReadsTheMachineIsRefusedWithItsLine) {
+  const std::pair<const char*, const char*> refused[] = {
+      {"Error(StrCat(\"x=\", GetEnv(\"TOKEN\")));", "'GetEnv' reads the user's environment"},
+      {"x = GetEnv(\"HOME\") == \"\";", "'GetEnv' reads the user's environment"},
+      {"If (FileExists(\"/etc/hostname\")) x = 1; EndIf", "'FileExists' probes the file system"},
+      {"s = AbsolutePath(\"x\");", "'AbsolutePath' works on where files lie"},
+      {"s = CurrentDir;", "'CurrentDir' works on where files lie"},
+      {"s = CurrentDirectory;", "'CurrentDirectory' works on where files lie"},
+      {"s = CurrentFileName;", "'CurrentFileName' works on where files lie"},
+      {"s = DirName(\"/etc/passwd\");", "'DirName' works on where files lie"},
+      {"s = FixRelativePath(\"x\");", "'FixRelativePath' works on where files lie"},
+      {"s = GmshExecutableName;", "'GmshExecutableName' works on where files lie"},
+      {"x = GetValue(\"x?\", 1);", "'GetValue' asks the terminal"},
+      {"s = GetStringValue(\"x?\", \"a\");", "'GetStringValue' asks the terminal"},
+      {"x = GetNumber(\"p\");", "'GetNumber' reads ONELAB parameters"},
+      {"s = GetString(\"p\");", "'GetString' reads ONELAB parameters"},
+      {"s = OnelabAction;", "'OnelabAction' reads ONELAB parameters"},
+      {"s = Today;", "'Today' reads the machine's clock or memory"},
+      {"x = Cpu;", "'Cpu' reads the machine's clock or memory"},
+      {"x = Memory;", "'Memory' reads the machine's clock or memory"},
+      {"x = TotalMemory;", "'TotalMemory' reads the machine's clock or memory"},
+      {"If (0) x = TotalMemory; EndIf", "'TotalMemory'"},  // a branch never taken: still refused
+  };
+  for (const auto& [statement, why] : refused) {
+    SCOPED_TRACE(statement);
+    const std::string message = scan(std::string(geometry) + statement + "\n");
+    EXPECT_EQ(message.rfind("t.geo:18: ", 0), 0u) << message;
+    EXPECT_NE(message.find(why), std::string::npos) << message;
+  }
+  // In a string or a comment a word is only text.
+  EXPECT_EQ(scan("Printf(\"GetEnv FileExists\");\n// GetEnv(\"TOKEN\")\n"), "");
+}
+
 // What gmsh's lexer reads otherwise than a text editor shows: refused.
 TEST(GeoScan, ANulByteOrAStringGmshWouldCutIsRefused) {
   EXPECT_NE(scan(std::string("x = 1;\n// a comment\0 System \"touch pwned\";\n", 40)).find("t.geo:2: a NUL byte"),
@@ -131,6 +166,51 @@ TEST_F(SceneSourcesTest, ExactlyTheFilesTheGeometryReadsNoOptFile) {
   EXPECT_EQ(s.folders, std::vector<std::string>{"sub"});
   EXPECT_EQ(s.files[1].bytes, "y = 2;\n");
   EXPECT_EQ(s.files[1].path, (dir / "scene/part.geo").string());
+}
+
+// Staged means scanned: a list (ListFromFile) is numbers for gmsh, scanned all the same.
+TEST_F(SceneSourcesTest, AListIsScannedLikeAScript) {
+  write("scene/nums.txt", "1 2 3.5e-1\n4\n");
+  EXPECT_EQ(refusal("v() = ListFromFile(\"nums.txt\");\n"), "");
+  write("scene/list.txt", "1 2\nSleep 6;\n");
+  const std::string m = refusal("If (0) v() = ListFromFile(\"list.txt\"); EndIf\n");
+  EXPECT_NE(m.find("list.txt:2: 'Sleep' stalls the run"), std::string::npos) << m;
+  write("scene/nul.txt", std::string("1 2\0 3\n", 7));
+  EXPECT_NE(refusal("v() = ListFromFile(\"nul.txt\");\n").find("nul.txt:1: a NUL byte"), std::string::npos);
+}
+
+// gmsh's merge-time side files (Common/OpenFile.cpp of gmsh 4.8 and 4.11, MergeFile: after
+// merging any file F it merges F + ".opt" if stat() finds it; its only one). F is each file gmsh
+// merges: the entry it opens (t.geo, or the scene's .msh), a Merge or MergeWithBoundingBox of a
+// .geo, .msh, .step, .stp or .brep, and F.opt itself (F.opt.opt). Whatever statement names one of
+// them, it is refused, never staged; core/mesh/meshing_child.h's box makes one inert besides
+// (tests/test_meshing_child.cpp, ASideFileStagedAnywayIsInert).
+TEST_F(SceneSourcesTest, NoSideFileOfAnyMergedFileIsStagedWhateverNamesIt) {
+  write("scene/m.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
+  write("scene/g.geo", "x = 1;\n");
+  write("scene/s.step", "ISO-10303-21;\n");
+  write("scene/s.brep", "DBRep_DrawableShape\nCASCADE Topology V1\n");
+  const std::string merged = "Merge \"m.msh\";\nMerge \"g.geo\";\nMerge \"s.step\";\nMergeWithBoundingBox \"s.brep\";\n";
+  EXPECT_EQ(refusal(merged), "");  // the control: the merges themselves are accepted
+  for (const char* side : {"t.geo.opt", "m.msh.opt", "g.geo.opt", "s.step.opt", "s.brep.opt", "t.geo.opt.opt"})
+    for (const char* statement : {"Include \"%\";", "Merge \"%\";", "v() = ListFromFile(\"%\");",
+                                  "ShapeFromFile(\"%\");", "If (0) v() = ListFromFile(\"%\"); EndIf"}) {
+      std::string named = statement;
+      named.replace(named.find('%'), 1, side);
+      SCOPED_TRACE(named);
+      write(std::string("scene/") + side, "Sleep 6;\n");
+      const std::string m = refusal(merged + named + "\n");
+      EXPECT_NE(m.find("t.geo:5: '"), std::string::npos) << m;
+      EXPECT_NE(m.find("no file of a scene may end in .opt"), std::string::npos) << m;
+    }
+  // The scene's own geometry or mesh named *.opt.
+  write("scene/x.geo.opt", "x = 1;\n");
+  try {
+    thinlayer::read_scene_sources((dir / "scene").string(), "x.geo.opt", false, "s.json:3:5");
+    ADD_FAILURE() << "a geometry named *.opt was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no file of a scene may end in .opt"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(SceneSourcesTest, AnIncludedScriptIsScannedInTurn) {

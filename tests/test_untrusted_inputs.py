@@ -2,7 +2,11 @@
 """Issue 34's hostile matrix: gmsh reads only what thinlayer read, in a box with a clock; no
 untrusted file is parsed in the main process; outputs are distinct; bounds and messages.
 
-    /usr/bin/python3 tests/test_untrusted_inputs.py PATH/TO/thinlayer PATH/TO/cases/lap_joint
+    /usr/bin/python3 tests/test_untrusted_inputs.py PATH/TO/thinlayer PATH/TO/cases/lap_joint [GROUP ...]
+
+(GROUP: a function below, to run only those; every group by default.) Issue 43's groups follow
+issue 34's: side_files, machine, report_one_file, write_time, report_folder, one_line,
+tmpdir_clock_names.
 
 Every case runs thinlayer (or the report) in its own session in a folder holding the user's files
 and asserts: the exit status, exactly one line on stderr holding the expected words, the wall
@@ -100,16 +104,55 @@ def session_processes_of(argv):
     return found
 
 
-def case(name, args, status, words, folder, seconds, changes=(), report=False, limit_memory=None, lines=1):
-    """One case: exit `status`, `lines` line(s) on stderr (the first holding `words`), within `seconds`,
-    the folder as before but for the entries named in `changes`, nothing outside, nothing left."""
+def run_during(argv, folder, timeout, env, during, ready=None):
+    """argv in its own session; `during()` is called once `ready()` holds (by default: the run has
+    begun meshing, its staging folder is in $TMPDIR), or at once if it never does within 30 s."""
+    ready = ready or (lambda: os.listdir(TMP))
+    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
+        p = subprocess.Popen(argv, cwd=folder, stdout=out, stderr=err, text=True, start_new_session=True, env=env)
+        deadline = time.monotonic() + 30
+        while time.monotonic() < deadline and p.poll() is None and not ready():
+            time.sleep(0.01)
+        during()
+        try:
+            p.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
+        time.sleep(0.05)
+        out.seek(0), err.seek(0)
+        return subprocess.CompletedProcess(argv, p.returncode, out.read(), err.read()), session_processes(p.pid)
+
+
+def one_line_text(text):
+    """No control character but the newlines that end its lines (SPEC §4: messages are escaped)."""
+    return all(c == "\n" or (" " <= c and c != "\x7f" and not "\x80" <= c <= "\x9f") for c in text)
+
+
+def case(name, args, status, words, folder, seconds, changes=(), report=False, limit_memory=None, lines=1, env=None,
+         during=None, ready=None, absent=None):
+    """One case: exit `status`, `lines` line(s) on stderr (the first holding `words`), no control
+    character in them, within `seconds`, the folder as before but for the entries named in `changes`,
+    nothing outside, nothing left; with `during`, that is done once the run meshes; `absent`: a
+    string found nowhere in what the run printed."""
     before, outside = snapshot(folder), snapshot(OUTSIDE)
     argv = [sys.executable, MAKE_REPORT, *args] if report else [THINLAYER, *args]
     start = time.monotonic()
-    r, survivors = run(argv, folder, timeout=max(2 * seconds, 30), limit_memory=limit_memory)
+    if during:
+        r, survivors = run_during(argv, folder, max(2 * seconds, 30), env or ENV, during, ready)
+    elif env:
+        try:
+            r, survivors = run_in_session(argv, folder, max(2 * seconds, 30), env=env)
+        except subprocess.TimeoutExpired:
+            r, survivors = subprocess.CompletedProcess(argv, None, "", "(killed)"), []
+    else:
+        r, survivors = run(argv, folder, timeout=max(2 * seconds, 30), limit_memory=limit_memory)
     took = time.monotonic() - start
     got = r.stderr.strip().splitlines()
     line = got[0] if got else ""
+    check(name, one_line_text(r.stderr), f"a control character on stderr: {r.stderr[-500:]!r}")
+    if absent:
+        check(name, absent not in r.stderr and absent not in r.stdout, f"{absent!r} was printed")
     check(name, r.returncode == status, f"exit {r.returncode}, expected {status}; stderr {r.stderr[-2000:]!r}")
     check(name, len(got) == lines, f"{len(got)} lines on stderr, expected {lines}: {r.stderr[-2000:]!r}")
     check(name, words in line, f"{words!r} not in {line!r}")
@@ -384,8 +427,8 @@ def outputs(s):
     p = subprocess.Popen([THINLAYER, "study", "validity", "--scene", slow, "--out", "NEW"], cwd=f, env=ENV,
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     deadline = time.monotonic() + 30
-    while time.monotonic() < deadline and len(session_processes(p.pid)) < 2:
-        time.sleep(0.02)
+    while time.monotonic() < deadline and (len(session_processes(p.pid)) < 2 or not os.listdir(TMP)):
+        time.sleep(0.02)  # the meshing child and its staging folder (not the report folder's check)
     check("SIGTERM while meshing", len(session_processes(p.pid)) >= 2 and os.listdir(TMP), "no meshing child, no staging")
     p.send_signal(signal.SIGTERM)
     status = p.wait(timeout=30)
@@ -505,18 +548,260 @@ def messages(s):
          "the glue: E and nu give", f, 10)
 
 
+# ---- Issue 43: what gmsh reads is what was scanned; no environment; the report reads one file ----
+
+SLOW = "For i In {1:300000}\nEndFor"  # a geometry whose reading takes a fraction of a second, once per mesh
+SLOWER = "For i In {1:600000}\nEndFor"  # about 0.5 s to read on this machine idle, 1.6 s loaded
+
+
+def side_files(s):
+    """Staged means scanned: gmsh merges F.opt after every file F it merges (Common/OpenFile.cpp); no
+    file of a scene may end in .opt, whatever names it, and a list is scanned like a script."""
+    f = s.folder
+    s.write("side.geo.opt", f'Sleep 6;\nSystem "touch {outside("pwned_side")}";\n')
+    case("ListFromFile of the .geo's own .opt, in If (0)",
+         ["solve", "--scene", s.with_geo("side", first='If (0) v() = ListFromFile("side.geo.opt"); EndIf')], 2,
+         "side.geo:1: 'ListFromFile' of \"side.geo.opt\": a file named '*.opt'", f, 10)
+    s.write("part.geo.opt", "x = 1;\n")
+    case("Include of a .opt", ["solve", "--scene", s.with_geo("inc_opt", last='Include "part.geo.opt";')], 2,
+         "no file of a scene may end in .opt", f, 10)
+    s.write("mesh.msh.opt", "Sleep 6;\n")
+    case("Merge of a .msh's .opt", ["solve", "--scene", s.with_geo("merge_opt", last='Merge "mesh.msh.opt";')], 2,
+         "no file of a scene may end in .opt", f, 10)
+    s.write("shape.step.opt", "ISO-10303-21;\n")
+    case("ShapeFromFile of a .opt", ["solve", "--scene", s.with_geo("shape_opt", first='SetFactory("OpenCASCADE");',
+         last='v() = ShapeFromFile("shape.step.opt");')], 2, "no file of a scene may end in .opt", f, 10)
+    s.write("chain.geo.opt.opt", "Sleep 6;\n")
+    case("ListFromFile of a .opt's .opt", ["solve", "--scene", s.with_geo("chain", last='v() = ListFromFile("chain.geo.opt.opt");')],
+         2, "no file of a scene may end in .opt", f, 10)
+    s.write("own.geo.opt", s.geo)
+    case("a geometry named *.opt", ["solve", "--scene", s.with_json("own_opt", lambda j: j.update(geometry="own.geo.opt"))], 2,
+         "'geometry' must name a gmsh .geo file, got ./own.geo.opt", f, 10)  # before scene_sources' own refusal
+    s.write("sleepy.txt", "1 2 3\nSleep 6;\n")
+    case("a ListFromFile list holding Sleep", ["solve", "--scene", s.with_geo("sleepy_list", last='v() = ListFromFile("sleepy.txt");')],
+         2, "sleepy.txt:2: 'Sleep' stalls the run", f, 10)
+    s.write("numbers.txt", "1 2 3.5\n4e-1\n")
+    case("a ListFromFile list of numbers (the control)",
+         ["solve", "--scene", s.with_geo("number_list", last='v() = ListFromFile("numbers.txt");')], 0, "", f, 60, lines=0)
+
+
+def machine(s):
+    """The scene sees no environment and probes nothing: refused by the scan, before gmsh runs."""
+    f = s.folder
+    env = dict(ENV, TOKEN="s3cret-token-43")
+    case("GetEnv(TOKEN) in an Error, TOKEN set", ["solve", "--scene", s.with_geo("getenv", first='Error(StrCat("x=", GetEnv("TOKEN")));')],
+         2, "getenv.geo:1: 'GetEnv' reads the user's environment", f, 10, env=env, absent="s3cret-token-43")
+    case("GetEnv in a coordinate", ["solve", "--scene", s.with_geo("getenv_x", last='Point(200) = {StrLen(GetEnv("TOKEN")), 0, 0};'),
+         "--out", "r.h5"], 2, "'GetEnv' reads the user's environment", f, 10, env=env, absent="s3cret-token-43")
+    for word, statement, why in (
+            ("FileExists", 'If (FileExists("/etc/hostname")) Error("seen"); EndIf', "probes the file system"),
+            ("AbsolutePath", 's = AbsolutePath("lap_joint.geo");', "works on where files lie"),
+            ("CurrentDir", 'Printf(StrCat("in ", CurrentDir));', "works on where files lie"),
+            ("DirName", 's = DirName("/etc/passwd");', "works on where files lie"),
+            ("TotalMemory", "x = TotalMemory;", "reads the machine's clock or memory"),
+            ("Today", "s = Today;", "reads the machine's clock or memory"),
+            ("GetValue", 'x = GetValue("x?", 1);', "asks the terminal")):
+        case(f"{word} in a .geo", ["solve", "--scene", s.with_geo("machine_" + word, first=statement)], 2,
+             f"machine_{word}.geo:1: '{word}' {why}", f, 10)
+
+
+def report_one_file(s):
+    """The report opens the one file it is given: external links, external storage and virtual
+    datasets refused before anything is read (crafted with h5py)."""
+    f = s.folder
+    good = s.path("previous.h5")
+
+    def crafted(name, change):
+        shutil.copy(good, s.path(name))
+        with h5py.File(s.path(name), "a") as h:
+            change(h)
+        return name
+
+    with h5py.File(outside("other.h5"), "w") as o:
+        o["got"] = [b"a secret of another file"]
+        o["nums"] = [1.0, 2.0, 3.0, 4.0]
+    kinds = (
+        ("external storage (/environment/x in /etc/passwd)", "ext_storage.h5",
+         lambda h: h.create_dataset("environment/x", shape=(64,), dtype="u1", external=[("/etc/passwd", 0, 64)]),
+         "/environment/x keeps its values in another file ('/etc/passwd', external storage)"),
+        ("an external link", "ext_link.h5",
+         lambda h: h.__setitem__("environment/other", h5py.ExternalLink(outside("other.h5"), "/got")),
+         "/environment/other is an external link to"),
+        ("an external link five groups down", "ext_deep.h5",
+         lambda h: h.__setitem__("environment/a/b/c/d/e", h5py.ExternalLink(outside("other.h5"), "/got")),
+         "/environment/a/b/c/d/e is an external link"),
+        ("a virtual dataset", "virtual.h5", lambda h: h.create_virtual_dataset(
+            "environment/v", vds_layout(outside("other.h5"))), "/environment/v is a virtual dataset"),
+        ("a virtual dataset of this very file", "virtual_self.h5", lambda h: h.create_virtual_dataset(
+            "environment/v", vds_layout(".")), "/environment/v is a virtual dataset"),
+        ("a hard link back to the root, then an external link", "cycle.h5",
+         lambda h: (h.__setitem__("environment/root", h["/"]),
+                    h.__setitem__("environment/zz", h5py.ExternalLink(outside("other.h5"), "/got"))),
+         "/environment/zz is an external link"),
+    )
+    for label, name, change, words in kinds:
+        crafted(name, change)
+        case(f"report: {label}", [name, "rep_" + name, "--time-limit", "60"], 2, f"make_report: {name}: ", f, 30,
+             report=True, absent="secret of another file")
+        check(f"report: {label}: said", words in table[-1][2], table[-1][2])
+    crafted("soft_link.h5", lambda h: h.__setitem__("environment/alias", h5py.SoftLink("/checks")))
+    elsewhere = tempfile.mkdtemp(prefix="thinlayer-report-")
+    case("report: a soft link inside the file (the control)", ["soft_link.h5", os.path.join(elsewhere, "r"), "--time-limit",
+         "120"], 0, "", f, 120, report=True, lines=0)
+    check("report: a soft link: written", os.path.exists(os.path.join(elsewhere, "r", "index.html")), "no index.html")
+    shutil.rmtree(elsewhere, ignore_errors=True)
+
+
+def vds_layout(source):
+    layout = h5py.VirtualLayout(shape=(4,), dtype="f8")
+    layout[:] = h5py.VirtualSource(source, "nums" if source != "." else "/checks/pass", shape=(4,))
+    return layout
+
+
+def write_time(s):
+    """Outputs judged again when they are written: a file the user saves at an output's path while
+    the run works is kept, the run exits 2 saying so (studies, validity-map and solve --vtu alike)."""
+    f = s.folder
+    slow = s.with_geo("slow_w", first=SLOW)
+    users = b"the user's own file, saved during the run\n"
+
+    def save(*names):
+        def write():
+            for name in names:
+                os.makedirs(os.path.dirname(s.path(name)) or f, exist_ok=True)
+                with open(s.path(name), "wb") as u:
+                    u.write(users)
+        return write
+
+    def kept(label, *names):
+        for name in names:
+            with open(s.path(name), "rb") as u:
+                check(f"{label}: {name} kept", u.read() == users, "replaced")
+
+    label = "solve --vtu: the .vtu saved during the run"
+    case(label, ["solve", "--scene", slow, "--vtu", "w.vtu"], 2, "cannot write 'w.vtu': it exists and is not", f, 60,
+         changes={"w.vtu"}, during=save("w.vtu"))
+    kept(label, "w.vtu")
+    label = "study --scene: DIR/results.h5 saved during the run"
+    # Saved once the study has opened its results file (W1 made), so judged at the commit.
+    case(label, ["study", "validity", "--scene", slow, "--out", "W1", "--quiet", "--eps", "0.1,0.05,0.02"], 2,
+         "cannot write 'W1/results.h5'", f, 120, changes={"W1", "W1/results.h5"},
+         during=save("W1/results.h5"), ready=lambda: os.path.isdir(s.path("W1")) and time.sleep(0.3) is None)
+    kept(label, "W1/results.h5")
+    label = "study --scene: DIR/bondline_fields.csv saved during the run"
+    case(label, ["study", "convergence", "--scene", slow, "--out", "W2", "--quiet", "--eps", "0.1,0.05,0.02"], 2,
+         "cannot write 'W2/bondline_fields.csv': it exists and is not a CSV file thinlayer wrote", f, 120,
+         changes={"W2", "W2/bondline_fields.csv"}, during=save("W2/bondline_fields.csv"))
+    kept(label, "W2/bondline_fields.csv")
+    label = "validity-map: its CSV saved during the run"
+    case(label, ["study", "validity-map", "--scene", slow, "--out", "W3", "--quiet", "--thickness-ratios", "1e-2",
+                 "--modulus-ratios", "1e-1", "--poisson", "0.45"], 2,
+         "cannot write 'W3/validity_map_lap-joint.csv'", f, 180, changes={"W3", "W3/validity_map_lap-joint.csv"},
+         during=save("W3/validity_map_lap-joint.csv"))
+    kept(label, "W3/validity_map_lap-joint.csv")
+    for name in ("W1", "W2", "W3", "w.vtu"):
+        shutil.rmtree(s.path(name), ignore_errors=True) if os.path.isdir(s.path(name)) else os.remove(s.path(name))
+
+
+def report_folder(s):
+    """The report's folder is checked before the work: a folder it would refuse costs seconds, not
+    the study; a report refused after all the same is exit 2 naming the files kept."""
+    f = s.folder
+    s.write("R1/report/index.html", "<html>the user's page</html>\n")
+    case("study --scene: DIR/report/index.html the user's", ["study", "validity", "--scene", "lap_joint.json", "--out", "R1"],
+         2, "the report's folder: ", f, 10)
+    check("study --scene: DIR/report/index.html: said", "index.html: exists and is not a report this script wrote" in table[-1][2],
+          table[-1][2])
+    s.write("R2/report", "a file where the report's folder goes\n")
+    case("study --scene: DIR/report a file", ["study", "convergence", "--scene", "lap_joint.json", "--out", "R2"], 2,
+         "/R2/report: exists and is not a directory", f, 10)
+    s.write("R3/report/figures", "a file where the figures go\n")
+    case("study --scene: DIR/report/figures a file", ["study", "validity", "--scene", "lap_joint.json", "--out", "R3"], 2,
+         "/R3/report/figures: exists and is not a directory", f, 10)
+    case("validity-map: DIR/report/index.html the user's",
+         ["study", "validity-map", "--scene", "lap_joint.json", "--out", "R1", "--thickness-ratios", "1e-2"], 2,
+         "the report's folder: ", f, 10)
+    case("verify: DIR/report/index.html the user's", ["verify", "--out", "R1"], 2, "the report's folder: ", f, 10)
+    # Refused at the end all the same: a figure of the joint's report saved by the user.
+    s.write("R4/report/figures/scene_lap-joint.png", "the user's picture\n")
+    kept = {"R4", "R4/results.h5", "R4/bondline_fields.csv"}
+    case("study --scene: a figure in the way, found by the report", ["study", "validity", "--scene", "lap_joint.json",
+         "--out", "R4", "--quiet", "--eps", "0.1,0.05,0.02"], 2, "the report was not written (", f, 120, changes=kept)
+    check("a figure in the way: what is kept", table[-1][2].endswith("kept R4/results.h5 and R4/bondline_fields.csv"),
+          table[-1][2])
+    for name in ("R1", "R2", "R3", "R4"):
+        shutil.rmtree(s.path(name), ignore_errors=True)
+
+
+def one_line(s):
+    """Every value echoed from a file or from gmsh escaped: one line, no control character."""
+    f = s.folder
+    evil = "x\x1b[31mRED\nY"
+    fields = (
+        ("units", lambda j: j.update(units=evil)),
+        ("plane", lambda j: j.update(plane=evil)),
+        ("element", lambda j: j.update(element=evil)),
+        ("geometry", lambda j: j.update(geometry=evil + ".geo")),
+        ("faces", lambda j: j["interface"].update(faces={"plus": evil, "minus": "contact"})),
+        ("plus", lambda j: j["interface"].update(plus=evil)),
+        ("minus", lambda j: j["interface"].update(minus=evil)),
+        ("an unknown key", lambda j: j.update({evil: 1})),
+        ("a support group", lambda j: j["supports"][0].update(group=evil)),
+    )
+    for label, change in fields:
+        case(f"one line: {label} holding ESC and a newline", ["solve", "--scene", s.with_json("evil_" + label.split()[-1], change)],
+             2, "x\\u001b[31mRED\\u000aY", f, 10)
+    s.write("gmsh_error.geo", s.geo + '\nError("first\x1b[2J\nsecond");\n')
+    case("one line: gmsh's error text holding ESC and a newline",
+         ["solve", "--scene", s.with_json("gmsh_error", lambda j: j.update(geometry="gmsh_error.geo"))], 2,
+         "first\\u001b[2J\\u000asecond", f, 30)
+
+
+def tmpdir_clock_names(s):
+    """A relative TMPDIR works; --mesh-timeout bounds all the meshing of a command; the longest name
+    a file system takes works as --out."""
+    f = s.folder
+    os.makedirs(s.path("rel_tmp"), exist_ok=True)
+    for tmpdir in ("rel_tmp", "./rel_tmp/../rel_tmp/"):
+        case(f"TMPDIR={tmpdir}", ["solve", "--scene", "lap_joint.json"], 0, "", f, 60, lines=0,
+             env=dict(ENV, TMPDIR=tmpdir))
+        check(f"TMPDIR={tmpdir}: nothing left in it", not os.listdir(s.path("rel_tmp")), str(os.listdir(s.path("rel_tmp"))))
+    # The limit: a multiple of one mesh of this geometry, as measured now (the machine's load moves
+    # it): each mesh fits in it, the four of the study (2.5 meshes) and the two of the map (h and
+    # h/2: 1.5 meshes) together do not. (The clock's arithmetic itself: tests/test_meshing_child.cpp.)
+    slow = s.with_geo("slow_clock", first=SLOWER)
+    r = subprocess.run([THINLAYER, "solve", "--scene", slow, "--json"], cwd=f, capture_output=True, text=True, env=ENV)
+    one_mesh = json.loads(r.stdout)['times_s']['meshing']
+    limit = f"{2.5 * one_mesh:.2f}"
+    case(f"study --scene --mesh-timeout {limit} (2.5 meshes): one clock for all its meshes",
+         ["study", "validity", "--scene", slow, "--mesh-timeout", limit, "--quiet"], 2, "slow_clock.geo: ", f, 30)
+    check("one clock: said", f"the wall-clock limit of {float(limit):g} s (--mesh-timeout" in table[-1][2], table[-1][2])
+    limit = f"{1.5 * one_mesh:.2f}"
+    case(f"validity-map --mesh-timeout {limit} (1.5 meshes)", ["study", "validity-map", "--scene", slow, "--mesh-timeout",
+         limit, "--quiet", "--thickness-ratios", "1e-2,1e-1", "--modulus-ratios", "1e-1", "--poisson", "0.45"], 2,
+         f"the wall-clock limit of {float(limit):g} s (--mesh-timeout", f, 30)
+    for command in ("solve", "study"):
+        r = subprocess.run([THINLAYER, command, "--help"], capture_output=True, text=True)
+        check(f"{command} --help: the clock is the command's", "all the meshing of the command" in " ".join(r.stdout.split()),
+              r.stdout[-300:])
+    for length in (253, 255):
+        name = "n" * (length - 3) + ".h5"
+        case(f"--out a {length}-byte name", ["solve", *CHEAP, "--out", name], 0, "", f, 10, lines=0, changes={name})
+        os.remove(s.path(name))
+
+
+GROUPS = ("unscanned_routes", "hangs", "untrusted_files", "outputs", "bounds", "messages", "memory", "csv_cell",
+          "side_files", "machine", "report_one_file", "write_time", "report_folder", "one_line", "tmpdir_clock_names")
+
+
 def main():
     start = time.monotonic()
     s = Scene()
+    only = sys.argv[3:]  # optional: the groups to run (GROUPS' names); all by default
     try:
-        unscanned_routes(s)
-        hangs(s)
-        untrusted_files(s)
-        outputs(s)
-        bounds(s)
-        messages(s)
-        memory(s)
-        csv_cell(s)
+        for group in GROUPS:
+            if not only or group in only:
+                globals()[group](s)
     finally:
         shutil.rmtree(s.folder, ignore_errors=True)
         shutil.rmtree(OUTSIDE, ignore_errors=True)

@@ -37,6 +37,18 @@ const std::map<std::string, std::string>& refused_words() {
       w[c] = "sets gmsh's process-wide options (only Geometry.* and Mesh.* are allowed in a scene's geometry)";
     for (const char* c : {"SetNumber", "SetString"}) w[c] = "sets ONELAB parameters, which can name solvers to run";
     for (const char* c : {"S2N", "StringToName"}) w[c] = "builds a name at run time, which could spell any command";
+    // What the scene would learn of the machine it runs on, and carry into messages and results.
+    w["GetEnv"] = "reads the user's environment (a secret a message or a coordinate would carry)";
+    w["FileExists"] = "probes the file system beyond the scene's files";
+    for (const char* c : {"AbsolutePath", "CurrentDir", "CurrentDirectory", "CurrentFileName", "DirName",
+                          "FixRelativePath", "GmshExecutableName"})
+      w[c] = "works on where files lie on this machine (a path a result would carry); name files relative to the "
+             "script, in quotes";
+    for (const char* c : {"GetValue", "GetStringValue"}) w[c] = "asks the terminal for a value";
+    for (const char* c : {"GetNumber", "GetString", "OnelabAction"})
+      w[c] = "reads ONELAB parameters, which the command line or another program sets";
+    for (const char* c : {"Today", "Cpu", "Memory", "TotalMemory"})
+      w[c] = "reads the machine's clock or memory (the result would depend on the machine)";
     return w;
   }();
   return words;

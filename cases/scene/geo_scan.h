@@ -25,6 +25,12 @@
 //     PostProcessing.*, Print.*, View.*: terminal output, solver executables, ...), and
 //     SetNumber/SetString (ONELAB parameters, which name solvers too);
 //   - a name built at run time (S2N, StringToName), which could spell any command above;
+//   - reading the machine rather than the scene's files: GetEnv (the user's environment),
+//     FileExists (a probe of the file system), AbsolutePath, CurrentDir(ectory), CurrentFileName,
+//     DirName, FixRelativePath, GmshExecutableName (paths of this machine), GetValue and
+//     GetStringValue (the terminal), GetNumber, GetString, OnelabAction (ONELAB's parameters),
+//     Today, Cpu, Memory, TotalMemory (the machine's clock and memory): a result depends on the
+//     scene's files alone, and carries nothing of the machine's;
 //   - Include, Merge, MergeWithBoundingBox, ShapeFromFile, ListFromFile of anything but one file
 //     name in quotes (a computed name cannot be checked); which names and files are accepted is
 //     scene_sources.h's to say.

@@ -18,8 +18,8 @@
 // A mesh read from a .msh is counted as it is.
 //
 // The estimate is bounded itself (a Transfinite count of 1e8 ignores every size): in the meshing
-// child it may take estimate_memory_bytes more memory and estimate_seconds of wall clock (or the
-// --mesh-timeout, if shorter); beyond either it is refused, naming the geometry.
+// child it may take estimate_memory_bytes more memory and estimate_seconds of wall clock; beyond
+// either it is refused, naming the geometry (the command's --mesh-timeout may end it first).
 #include "cases/scene/scene_spec.h"
 
 namespace thinlayer {

@@ -1,5 +1,7 @@
 #include "cases/scene/scene_checks.h"
 
+#include "core/io/shown_text.h"
+
 #include <cmath>
 #include <map>
 #include <set>
@@ -17,21 +19,6 @@ std::string number(double x) {
   return s.str();
 }
 
-// A name as it can be shown: control characters as \u00XX.
-std::string shown(const std::string& name) {
-  std::string out;
-  for (unsigned char c : name) {
-    if (c < 0x20 || c == 0x7f) {
-      char code[8];
-      std::snprintf(code, sizeof code, "\\u%04x", c);
-      out += code;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out;
-}
-
 // `dataset`: the results file's group the name becomes a member of ("reactions/"), or "".
 void check_name(const std::string& where, const std::string& what, const std::string& name, const std::string& dataset) {
   for (unsigned char c : name)
@@ -43,10 +30,12 @@ void check_name(const std::string& where, const std::string& what, const std::st
 }
 
 void check_names(const SceneSpec& spec, const PositionedJson& doc) {
-  if (spec.name.find_first_not_of('.') == std::string::npos) {
+  {
     const TextPosition p = doc.at("/name");
-    fail_at(doc.source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column),
-            "'name' '" + spec.name + "' names no group of the results file (/studies/scene/<name>): give it a letter or digit");
+    const std::string where = doc.source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
+    check_name(where, "'name'", spec.name, "");  // printed in tables and the report's title
+    if (spec.name.find_first_not_of('.') == std::string::npos)
+      fail_at(where, "'name' '" + spec.name + "' names no group of the results file (/studies/scene/<name>): give it a letter or digit");
   }
   for (const SceneBodySpec& b : spec.bodies) {
     check_name(b.where, "body name", b.name, "");

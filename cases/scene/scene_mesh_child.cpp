@@ -70,8 +70,7 @@ SceneMeshes mesh_scene_in_child(const SceneSpec& spec,
   } catch (const std::runtime_error& e) {
     throw InputError(file + ": " + e.what());
   }
-  MeshingChildLimits limits;
-  limits.wall_limit_s = spec.mesh_timeout_s;
+  MeshingChildLimits limits;  // the wall clock: the command's (set_meshing_wall_clock)
   limits.read_folder = staging->root();
   const std::string entry = staging->root() + "/" + spec.sources->entry;
   std::string bytes;

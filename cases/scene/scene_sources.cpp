@@ -39,6 +39,14 @@ std::string extension(const std::string& staged) {
   return dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : staged.substr(dot);
 }
 
+// gmsh's side file (Common/OpenFile.cpp, MergeFile, in 4.8 as in 4.11): after merging any file F
+// (the entry gmsh opens, a Merge, the side file itself) it merges F + ".opt" if that exists.
+constexpr const char* side_file_suffix = ".opt";
+bool is_side_file(const std::string& staged) {
+  const std::string suffix = side_file_suffix;
+  return staged.size() >= suffix.size() && staged.compare(staged.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
 std::string folder_of(const std::string& staged) {
   const std::size_t slash = staged.rfind('/');
   return slash == std::string::npos ? "" : staged.substr(0, slash);
@@ -106,6 +114,10 @@ class SourceReader {
       if (made_.insert(folder).second) out_.folders.push_back(folder);
     }
     stack.push_back(last);
+    if (is_side_file(last))
+      throw InputError(prefix + "a file named '*" + std::string(side_file_suffix) + "': gmsh merges '<file>" +
+                       side_file_suffix + "' as a script after every file it merges, unasked, so no file of a scene may "
+                       "end in " + side_file_suffix);
     return join(stack);
   }
 
@@ -135,7 +147,8 @@ class SourceReader {
         return;
       case SceneSource::Shape:
         return check_shape(staged, path, bytes);
-      case SceneSource::List:
+      case SceneSource::List:  // numbers for gmsh; scanned all the same: staged means scanned
+        scan_geo_text(bytes, path);
         return;
     }
   }

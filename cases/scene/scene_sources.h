@@ -14,9 +14,14 @@
 //     backslash (gmsh splits names at '\' as at '/'), or leaves the scene's folder (by "..", or a
 //     symbolic link to elsewhere: the file itself must lie in the folder);
 //   - a file that is not a regular file (a FIFO would block the reader, a device is no file);
-//   - a script (the .geo, an Include, a .geo merged, a ListFromFile) holding a NUL byte or
-//     refused by the scan (cases/scene/geo_scan.h), or beginning with '$' (gmsh would read it
-//     as a mesh or a view); an include loop (a file that includes itself, directly or not);
+//   - a script (the .geo, an Include, a .geo merged) or a list (ListFromFile: numbers, scanned
+//     all the same, so that every file staged for gmsh has passed the scan) holding a NUL byte or
+//     refused by the scan (cases/scene/geo_scan.h), or a script beginning with '$' (gmsh would
+//     read it as a mesh or a view); an include loop (a file that includes itself, directly or not);
+//   - a file whose name ends in ".opt", whatever statement names it: after merging a file F gmsh
+//     merges F.opt unasked, as a script (gmsh's only merge-time side file: Common/OpenFile.cpp,
+//     MergeFile). None is ever staged; and the box denies gmsh the stat() by which it looks for one
+//     (core/mesh/meshing_child.h), so a side file would be inert even if it were there;
 //   - a mesh (the scene's "mesh", a Merge of a .msh) that does not begin with `$MeshFormat`:
 //     gmsh picks its reader from that first line and reads anything else as a script;
 //   - a Merge of any other extension (gmsh picks the reader by the extension, exactly as

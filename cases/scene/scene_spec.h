@@ -119,7 +119,6 @@ struct SceneSpec {
   std::vector<double> eps;  // the studies' ε grid (mm); empty = the default one
   int layer_elements = 2;
   std::size_t max_nodes = 2'000'000;  // --max-nodes: a larger mesh is refused before meshing (mesh_estimate.h)
-  double mesh_timeout_s = 600;        // --mesh-timeout: the meshing child's wall clock, s (core/mesh/meshing_child.h)
 
   int body_index(const std::string& name) const;  // -1 if none
   // Some bondline has a layer mode ("layer" or "glue").

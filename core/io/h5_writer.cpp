@@ -205,6 +205,7 @@ void H5Writer::commit() {
   file_ = -1;  // whatever happens next, the destructor must not close it again
   check(H5Fclose(file_id), "cannot close '" + path_ + "'");
   mark_and_flush(tmp_path_, path_);
+  if (rules_) check_replaceable(path_, OutputKind::Results, rules_->inputs, rules_->force);
   std::error_code ec;
   // Onto the end of any chain of symbolic links: the links stay, the file they name is replaced.
   std::filesystem::rename(tmp_path_, target_, ec);
@@ -212,6 +213,18 @@ void H5Writer::commit() {
   committed_ = true;
   unregister_removals(folder_removal_);  // the folders now hold the file
   folder_removal_ = -1;
+}
+
+void H5Writer::replace_only_under(OutputRules rules) { rules_ = std::move(rules); }
+
+void H5Writer::write_beside(const std::string& name, OutputKind kind, const std::string& text) const {
+  const std::string folder = std::filesystem::path(path_).parent_path().string();
+  const std::string path = (folder.empty() ? std::string(".") : folder) + "/" + name;
+  if (!rules_) return write_text_atomically(path, text);
+  // Written only while this file itself may still be: a results file refused at its commit then
+  // leaves no new file beside it.
+  check_replaceable(path_, OutputKind::Results, rules_->inputs, rules_->force);
+  write_output_text(path, kind, *rules_, text);
 }
 
 std::int64_t H5Writer::file() const {

@@ -29,6 +29,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -36,6 +37,7 @@
 
 #include <Eigen/Core>
 
+#include "core/io/output_ownership.h"
 #include "core/io/output_target.h"
 
 namespace thinlayer {
@@ -53,7 +55,14 @@ class H5Writer {
   H5Writer& operator=(const H5Writer&) = delete;
 
   // Closes the file and moves it onto the target path. No other call is allowed afterwards.
+  // Under replace_only_under, the target is judged by those rules first (OutputError, the
+  // target untouched, the file abandoned).
   void commit();
+  // The rules the commit and write_beside judge their targets by at the moment they write
+  // (core/io/output_ownership.h: a file saved at an output's path during a run is not replaced).
+  void replace_only_under(OutputRules rules);
+  // A text file of `kind` beside this one (its folder), written atomically under the same rules.
+  void write_beside(const std::string& name, OutputKind kind, const std::string& text) const;
   // Folders made for this file (deepest first): removed, if empty, when the file is abandoned,
   // so that a failed run leaves no empty output folder behind (SPEC §4); on a signal too (the
   // handler of core/io/output_target.h removes them, if empty, until the commit).
@@ -106,6 +115,7 @@ class H5Writer {
   std::int64_t file_ = -1;  // hid_t, kept as its underlying type so <hdf5.h> stays private
   bool committed_ = false;
   std::vector<std::string> folders_;
+  std::optional<OutputRules> rules_;
   int folder_removal_ = -1;  // folders_ in the signal handler's table
 };
 

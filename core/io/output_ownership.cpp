@@ -117,4 +117,9 @@ void check_distinct_outputs(const std::vector<OutputFile>& outputs, const std::v
   }
 }
 
+void write_output_text(const std::string& path, OutputKind kind, const OutputRules& rules, const std::string& text) {
+  check_replaceable(path, kind, rules.inputs, rules.force);
+  write_text_atomically(path, text, [&] { check_replaceable(path, kind, rules.inputs, rules.force); });
+}
+
 }  // namespace thinlayer

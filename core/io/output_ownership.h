@@ -41,6 +41,18 @@ struct InputFile {
 // own output of `kind` (unless `force`).
 void check_replaceable(const std::string& path, OutputKind kind, const std::vector<InputFile>& inputs, bool force);
 
+// What a run's outputs may replace: never one of its inputs; an existing file thinlayer did not
+// write only with --force. Judged before the work and again at the moment each output is written
+// (a file saved at an output's path while the run works is never replaced: SPEC §4).
+struct OutputRules {
+  std::vector<InputFile> inputs;
+  bool force = false;
+};
+
+// Writes `text` to `path` atomically (core/io/output_target.h), refused as check_replaceable
+// says at the moment of the write, the target then untouched.
+void write_output_text(const std::string& path, OutputKind kind, const OutputRules& rules, const std::string& text);
+
 // The file a write to `path` creates or replaces, as one string for all its names: the end of
 // its chain of symbolic links (dangling or not), in its folder's canonical path. Throws
 // OutputError as resolve_output_target does.

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include <climits>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -79,7 +81,13 @@ std::string resolve_output_target(const std::string& path) {
 
 std::string temporary_name_beside(const std::string& target) {
   static std::atomic<unsigned> counter{0};
-  return target + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+  const std::string suffix = ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+  // The suffix counted in the name's length: a target's name as long as the file system allows
+  // (NAME_MAX bytes) gets a temporary name made of its first bytes, so any name a user can pass works.
+  const std::size_t slash = target.rfind('/');
+  const std::size_t name_start = slash == std::string::npos ? 0 : slash + 1;
+  const std::size_t room = NAME_MAX - suffix.size();
+  return target.substr(0, name_start + std::min(room, target.size() - name_start)) + suffix;
 }
 
 void register_temporary(const std::string& path) {
@@ -136,7 +144,7 @@ void install_signal_cleanup() {
 
 void set_signal_child(int pid) { signal_child.store(pid); }
 
-void write_text_atomically(const std::string& path, const std::string& text) {
+void write_text_atomically(const std::string& path, const std::string& text, const std::function<void()>& check_before_rename) {
   const std::string target = resolve_output_target(path);
   const std::string tmp = temporary_name_beside(target);
   register_temporary(tmp);
@@ -150,6 +158,15 @@ void write_text_atomically(const std::string& path, const std::string& text) {
   // Without the fsync a crash soon after the rename can leave an empty target.
   if (error == 0 && ::fsync(fd) != 0) error = errno;
   if (fd >= 0 && ::close(fd) != 0 && error == 0) error = errno;
+  if (error == 0 && check_before_rename) {
+    try {
+      check_before_rename();
+    } catch (...) {
+      ::unlink(tmp.c_str());
+      unregister_temporary(tmp);
+      throw;
+    }
+  }
   if (error == 0 && std::rename(tmp.c_str(), target.c_str()) != 0) error = errno;
   if (error != 0 && fd >= 0) ::unlink(tmp.c_str());
   unregister_temporary(tmp);

@@ -11,6 +11,7 @@
 // Temporary files are registered while they exist; on SIGINT or SIGTERM the handler that
 // install_signal_cleanup() sets removes them before the process dies, so an interrupted run
 // leaves the previous result as it was and no `*.tmp.*` beside it.
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,7 +28,8 @@ struct OutputError : std::runtime_error {
 // naming `path` if that target exists and is not a regular file, or the chain is a loop.
 std::string resolve_output_target(const std::string& path);
 
-// A fresh name beside `target` ("<target>.tmp.<pid>.<n>"), unique per call and per process.
+// A fresh name beside `target` ("<target>.tmp.<pid>.<n>"), unique per call and per process; for a
+// name too long to take the suffix (NAME_MAX, 255 bytes, in all), the name's first bytes and the suffix.
 std::string temporary_name_beside(const std::string& target);
 
 // The signal handler removes every registered path (at most 64 at a time; paths up to 4095
@@ -56,6 +58,9 @@ void set_signal_child(int pid);  // 0: none
 
 // Writes `text` to `path` atomically (through a symbolic link, never onto a non-regular
 // file), flushed to disk. Throws OutputError naming `path`; the target is then untouched.
-void write_text_atomically(const std::string& path, const std::string& text);
+// `check_before_rename` (if given) runs once the temporary file is complete, just before it
+// replaces the target: what may be replaced is judged at the moment of writing (it throws to refuse).
+void write_text_atomically(const std::string& path, const std::string& text,
+                           const std::function<void()>& check_before_rename = {});
 
 }  // namespace thinlayer

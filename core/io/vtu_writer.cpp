@@ -249,6 +249,10 @@ void write_vtu(const std::string& path, const SceneRecord& scene) {
   write_text_atomically(path, vtu_text(scene, path));
 }
 
+void write_vtu(const std::string& path, const SceneRecord& scene, const OutputRules& rules) {
+  write_output_text(path, OutputKind::Vtu, rules, vtu_text(scene, path));
+}
+
 void check_vtu_target(const std::string& path) {
   const std::string tmp = temporary_name_beside(resolve_output_target(path));
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);

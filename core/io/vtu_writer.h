@@ -35,6 +35,7 @@
 // directory, FIFO or device).
 #include <string>
 
+#include "core/io/output_ownership.h"
 #include "core/io/scene_record.h"
 
 namespace thinlayer {
@@ -42,6 +43,8 @@ namespace thinlayer {
 // Throws std::runtime_error naming the path if the scene is inconsistent (sizes, cell widths,
 // node indices, an interface point on no node) or holds a NaN, or if the file cannot be written.
 void write_vtu(const std::string& path, const SceneRecord& scene);
+// The same, the target judged under `rules` at the moment of writing (core/io/output_ownership.h).
+void write_vtu(const std::string& path, const SceneRecord& scene, const OutputRules& rules);
 
 // Throws OutputError naming the path if a file cannot be created there (the path is a
 // directory, its directory is missing or not writable). Leaves nothing behind. Lets a caller

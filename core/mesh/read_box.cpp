@@ -1,5 +1,7 @@
 #include "core/mesh/read_box.h"
 
+#include "core/mesh/private_root.h"
+
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -95,7 +97,10 @@ ReadBox confine_reads_to(const std::string& folder) {
 
 std::string read_box_description() {
   const int abi = landlock_abi();
-  return abi > 0 ? "Landlock ABI " + std::to_string(abi) : "none (the staging folder only)";
+  return (abi > 0 ? "Landlock ABI " + std::to_string(abi) : std::string("no Landlock")) +
+         (private_root_available() ? "; user, mount and network namespaces (a root holding the staging folder alone)"
+                                   : "; no namespaces (the whole file system, for lookups)") +
+         "; seccomp allow-list";
 }
 
 }  // namespace thinlayer

@@ -27,7 +27,8 @@ int landlock_abi();
 // is there but the confinement fails (the caller must then not run gmsh).
 ReadBox confine_reads_to(const std::string& folder);
 
-// "Landlock ABI 7" or "none (staging folder only)", for the results' /environment.
+// The whole box, for the results' /environment: "Landlock ABI 7; user, mount and network namespaces
+// (...); seccomp allow-list" on this machine; "no Landlock", "no namespaces" where there are none.
 std::string read_box_description();
 
 }  // namespace thinlayer

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 #include <fcntl.h>
@@ -15,9 +16,16 @@ namespace thinlayer {
 
 namespace {
 
+// $TMPDIR (or /tmp), absolute and lexically normal: the meshing child works in the folder and
+// names it in its box (a relative TMPDIR, read from there, named nothing).
 std::string temporary_directory() {
   const char* tmp = std::getenv("TMPDIR");
-  return tmp && *tmp ? tmp : "/tmp";
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(tmp && *tmp ? tmp : "/tmp", ec).lexically_normal();
+  if (ec) throw std::runtime_error("cannot stage the scene's files for gmsh ($TMPDIR " + std::string(tmp) + ": " + ec.message() + ")");
+  std::string folder = absolute.string();
+  while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+  return folder;
 }
 
 [[noreturn]] void fail(const std::string& what) {

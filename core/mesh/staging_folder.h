@@ -3,7 +3,7 @@
 // the meshing child to read and nothing else (SPEC §4; cases/scene/scene_sources.h says which
 // files and core/mesh/read_box.h boxes the child into it).
 //
-// Made with mkdtemp under $TMPDIR (or /tmp), mode 0700, its files 0400, written with O_EXCL and
+// Made with mkdtemp under $TMPDIR (or /tmp; a relative one taken from the working directory), mode 0700, its files 0400, written with O_EXCL and
 // O_NOFOLLOW: no other user can read it, and nothing there but what was given. Removed when the
 // object goes, and by the signal handler of core/io/output_target.h on SIGINT, SIGTERM, SIGHUP
 // or SIGPIPE (not on SIGKILL: then a `thinlayer-scene-*` folder stays in $TMPDIR).

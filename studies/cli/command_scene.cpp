@@ -12,11 +12,13 @@
 
 #include "cases/scene/scene_mesh_child.h"
 #include "core/io/output_ownership.h"
+#include "core/mesh/meshing_child.h"
 #include "core/io/output_target.h"
 #include "core/io/vtu_writer.h"
 #include "studies/cli/options.h"
 #include "studies/cli/results_file.h"
 #include "studies/tools/run_phase.h"
+#include "studies/cli/report_runner.h"
 #include "studies/cli/scene_report.h"
 #include "studies/drivers/classification_cost.h"
 #include "studies/drivers/scene_file_study.h"
@@ -31,7 +33,6 @@ namespace {
 struct SceneSolveInput : SolveRun {
   std::string scene, mode = "limit";
   std::size_t max_nodes = SceneSpec{}.max_nodes;
-  double mesh_timeout_s = SceneSpec{}.mesh_timeout_s;
   double eps = 0;  // 0: an engineer's glue at its own thickness (checked with the scene)
 };
 
@@ -47,12 +48,6 @@ std::size_t max_nodes(const CLI::App& c, long long given_value) {
   return static_cast<std::size_t>(given_value);
 }
 
-// --mesh-timeout S (0 < S <= 1e6 s), or the default.
-double mesh_timeout(const CLI::App& c, double given_value) {
-  if (!given(c, "mesh-timeout")) return SceneSpec{}.mesh_timeout_s;
-  if (!(given_value > 0) || !(given_value <= 1e6)) throw std::invalid_argument("--mesh-timeout must be in (0, 1e6] seconds");
-  return given_value;
-}
 
 SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   require_only(c, scene_solve_options, "a scene file (--scene)");
@@ -60,7 +55,7 @@ SceneSolveInput parse_solve(const CLI::App& c, const SolveArgs& a) {
   in.scene = a.scene;
   if (in.scene.empty()) throw std::invalid_argument("--scene needs a file");
   in.max_nodes = max_nodes(c, a.max_nodes);
-  in.mesh_timeout_s = mesh_timeout(c, a.mesh_timeout);
+  start_mesh_clock(c, a.mesh_timeout);
   in.mode = given(c, "mode") ? a.mode : "limit";
   if (given(c, "eps")) {  // without it, an engineer's glue's own thickness (checked with the scene)
     in.eps = a.eps;
@@ -81,11 +76,17 @@ void write_results(const std::string& path, const SceneFileScene& scene, const S
 
 // One line on stderr, the exit status of its kind (out of memory: 2, naming the phase).
 int fail(const std::string& command, const std::exception& e, int status) {
-  std::cerr << "thinlayer " << command << ": " << failure_text(e) << "\n";
+  print_message(command, failure_text(e));
   return dynamic_cast<const std::bad_alloc*>(&e) ? 2 : status;
 }
 
 }  // namespace
+
+void start_mesh_clock(const CLI::App& c, double given_value) {
+  if (given(c, "mesh-timeout") && !(given_value > 0 && given_value <= 1e6))
+    throw std::invalid_argument("--mesh-timeout must be in (0, 1e6] seconds");
+  set_meshing_wall_clock(given(c, "mesh-timeout") ? given_value : default_mesh_timeout_s);
+}
 
 int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   SceneSolveInput in;
@@ -97,7 +98,6 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     RunPhase reading("reading the scene file " + in.scene);
     SceneSpec spec = read_scene_spec(in.scene);
     spec.max_nodes = in.max_nodes;
-    spec.mesh_timeout_s = in.mesh_timeout_s;
     // The outputs first: never one of the run's inputs nor each other, never a file thinlayer did
     // not write (unless --force), and writable; all before any work.
     inputs = scene_inputs(spec);
@@ -114,7 +114,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     load_path = scene_load_path(*bulk, in.mode, in.eps);
     if (!load_path.no_path.empty()) throw std::invalid_argument(load_path.no_path);
     if (const FrictionHold* over = load_path.exceeded()) {
-      std::cerr << "thinlayer solve: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+      print_message("solve", friction_line(*over, bulk->spec().units.force) + "; nothing solved");
       return 1;
     }
   } catch (const std::invalid_argument& e) {
@@ -143,7 +143,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     phase.emplace("writing " + in.out);
     if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force}, estimate ? &*estimate : nullptr);
     phase.emplace("writing " + in.vtu);
-    if (!in.vtu.empty()) write_vtu(in.vtu, s.record);
+    if (!in.vtu.empty()) write_vtu(in.vtu, s.record, {inputs, in.force});
     if (!in.json && !in.out.empty()) std::printf("  wrote %s\n", in.out.c_str());
     if (!in.json && !in.vtu.empty()) std::printf("  wrote %s\n", in.vtu.c_str());
     if (in.json) {
@@ -151,15 +151,15 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
       if (estimate) j["limit_error_estimate"] = limit_error_estimate_json(*estimate);
       std::printf("%s\n", j.dump().c_str());
     }
-    if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
-    if (const std::string w = film_warning(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
-    if (const std::string w = displacement_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
-    if (const std::string w = limit_slip_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = no_load_warning(s); !w.empty()) print_message("solve", w);
+    if (const std::string w = film_warning(s.record); !w.empty()) print_message("solve", w);
+    if (const std::string w = displacement_warning_line(s.record); !w.empty()) print_message("solve", w);
+    if (const std::string w = limit_slip_warning_line(s.record); !w.empty()) print_message("solve", w);
     if (!s.report.converged) {
-      std::cerr << "thinlayer solve: " << s.report.message << "\n";
+      print_message("solve", s.report.message);
       // What friction alone had to hold, where it did (the capacity was estimated within the load).
       for (const FrictionHold& h : load_path.friction)
-        std::cerr << "thinlayer solve: " << friction_line(h, bulk->spec().units.force) << "\n";
+        print_message("solve", friction_line(h, bulk->spec().units.force));
       return 1;
     }
     return 0;
@@ -205,13 +205,14 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     RunPhase reading("reading the scene file " + scene);
     SceneSpec spec = read_scene_spec(scene);
     spec.max_nodes = max_nodes(c, a.max_nodes);
-    spec.mesh_timeout_s = mesh_timeout(c, a.mesh_timeout);
+    start_mesh_clock(c, a.mesh_timeout);
     rules = {scene_inputs(spec), a.force};
     if (!out_dir.empty()) {  // the study's files in DIR, before the study (its report checks its own folder)
       check_distinct_outputs({{"results.h5", out_dir + "/results.h5"}, {"bondline_fields.csv", out_dir + "/bondline_fields.csv"}},
                              rules.inputs);
       check_replaceable(out_dir + "/results.h5", OutputKind::Results, rules.inputs, rules.force);
       check_replaceable(out_dir + "/bondline_fields.csv", OutputKind::Csv, rules.inputs, rules.force);
+      check_report_folder(out_dir + "/report");
     }
     if (given(c, "eps")) {
       spec.eps = a.eps.values;
@@ -229,7 +230,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     const LoadPath path = scene_load_path(*bulk, "limit", 0.0);
     if (!path.no_path.empty()) throw std::invalid_argument(path.no_path);
     if (const FrictionHold* over = path.exceeded()) {
-      std::cerr << "thinlayer study: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+      print_message("study", friction_line(*over, bulk->spec().units.force) + "; nothing solved");
       return 1;
     }
   } catch (const std::exception& e) {

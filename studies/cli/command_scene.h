@@ -17,4 +17,9 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args);
 // `study` given --scene; study: "convergence" or "validity" (any other is refused).
 int command_study_scene(const std::string& study, const CLI::App& command, const StudyArgs& args);
 
+// --mesh-timeout S (0 < S <= 1e6 s, default 600) as the command's one meshing clock
+// (core/mesh/meshing_child.h: it bounds all the meshing of the command). Throws
+// std::invalid_argument for a value out of range.
+void start_mesh_clock(const CLI::App& command, double given_value);
+
 }  // namespace thinlayer

@@ -354,7 +354,8 @@ CLI::App* declare_solve(CLI::App& thinlayer, SolveArgs& a) {
       ->type_name("N")->transform(integer("max-nodes"))->group("Scene files (your own joint)");
   c->add_option("--mesh-timeout", a.mesh_timeout,
                 "stop gmsh after S seconds of wall clock, reading and meshing the scene's\n"
-                "geometry (default 600; a Sleep or a loop in a .geo ends there)")
+                "geometry: all the meshing of the command together (default 600; a loop\n"
+                "in a .geo ends there)")
       ->type_name("S")->check(decimal("mesh-timeout"))->group("Scene files (your own joint)");
   c->footer(
       "Numbers are decimal (1e-3, 0.5, inf where a value may be infinite); no hex, no blanks.\n"
@@ -369,7 +370,7 @@ int command_solve(const CLI::App& command, const SolveArgs& args) {
   try {
     in = parse_solve(command, args);
   } catch (const std::exception& e) {
-    std::cerr << "thinlayer solve: " << e.what() << "\n";
+    print_message("solve", e.what());
     return 2;
   }
   text_out = in.json ? nullptr : stdout;
@@ -387,27 +388,27 @@ int command_solve(const CLI::App& command, const SolveArgs& args) {
       say("  wrote %s\n", in.out.c_str());
     }
     if (!in.vtu.empty()) {
-      write_vtu(in.vtu, record);
+      write_vtu(in.vtu, record, {{}, in.force});
       say("  wrote %s\n", in.vtu.c_str());
     }
     if (in.json) std::printf("%s\n", summary_line(in, record, report).c_str());
-    if (const std::string w = film_warning(record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = film_warning(record); !w.empty()) print_message("solve", w);
     if (!report.converged) {
-      std::cerr << "thinlayer solve: " << report.message << "\n";
+      print_message("solve", report.message);
       return 1;
     }
     return 0;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "thinlayer solve: " << e.what() << "\n";
+    print_message("solve", e.what());
     return 2;
   } catch (const OutputError& e) {
-    std::cerr << "thinlayer solve: " << e.what() << "\n";
+    print_message("solve", e.what());
     return 2;
   } catch (const std::bad_alloc& e) {
-    std::cerr << "thinlayer solve: " << failure_text(e) << "\n";
+    print_message("solve", failure_text(e));
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "thinlayer solve: " << e.what() << "\n";
+    print_message("solve", e.what());
     return 1;
   }
 }

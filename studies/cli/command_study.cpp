@@ -308,8 +308,8 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
                      "(estimated from the geometry and mesh_size; default 2000000)")
             ->type_name("N")->transform(integer("max-nodes")));
   group(c.add_option("--mesh-timeout", a.mesh_timeout,
-                     "with --scene: stop gmsh after S seconds of wall clock on each mesh\n"
-                     "(default 600)")
+                     "with --scene and validity-map: stop gmsh after S seconds of wall clock\n"
+                     "for all the meshing of the command together, not each mesh (default 600)")
             ->type_name("S")->check(decimal("mesh-timeout")));
 }
 
@@ -406,7 +406,7 @@ int command_study(const CLI::App& command, const StudyArgs& a) {
     if (given(command, "scene")) return command_study_scene(name, command, a);
     in = parse(command, a, name);
   } catch (const std::exception& e) {
-    if (is_root()) std::cerr << "thinlayer study: " << e.what() << "\n";  // every rank parsed the same
+    if (is_root()) print_message("study", e.what());  // every rank parsed the same
     return 2;
   }
   try {
@@ -444,16 +444,18 @@ int command_verify(const CLI::App& command, const StudyArgs& a) {
   try {
     in = parse(command, a, "verify");
   } catch (const std::exception& e) {
-    std::cerr << "thinlayer verify: " << e.what() << "\n";
+    print_message("verify", e.what());
     return 2;
   }
   try {
     // Its two files distinct after every link (a dangling summary.json -> results.h5 included).
     check_distinct_outputs({{"results.h5", in.out_dir + "/results.h5"}, {"summary.json", in.out_dir + "/summary.json"}},
                            {});
-    auto out = open_results(in.out_dir, {{}, in.force});
     const std::string summary = in.out_dir + "/summary.json";
-    check_replaceable(summary, OutputKind::Summary, {}, in.force);  // before the studies, not after
+    const std::string report_dir = in.out_dir + "/report";
+    check_replaceable(summary, OutputKind::Summary, {}, in.force);  // before the studies, not after (and again at the write)
+    check_report_folder(report_dir);
+    auto out = open_results(in.out_dir, {{}, in.force});
     std::map<std::string, double> timings;
     std::vector<Check> checks;
     auto timed = [&](const std::string& name, const std::function<std::vector<Check>()>& study) {
@@ -477,14 +479,13 @@ int command_verify(const CLI::App& command, const StudyArgs& a) {
     timed("validity_map", [&] { return run_validity_maps(in.threads, in.verbose, out.get()); });
     write_checks(*out, checks);
     out->commit();
-    write_text_atomically(summary, summary_json(checks, timings));
+    out->write_beside("summary.json", OutputKind::Summary, summary_json(checks, timings));
     std::cerr << "[verify] report\n";
-    const std::string report_dir = in.out_dir + "/report";
-    run_report(out->path(), report_dir);
+    run_report_keeping(out->path(), report_dir, {out->path(), summary});
     std::printf("\nwrote %s, %s and %s/index.html\n", out->path().c_str(), summary.c_str(), report_dir.c_str());
     return report_checks(checks);
   } catch (const std::exception& e) {
-    std::cerr << "thinlayer verify: " << failure_text(e) << "\n";
+    print_message("verify", failure_text(e));
     return 2;
   }
 }

@@ -8,12 +8,14 @@
 
 #include "cases/scene/scene_mesh_child.h"
 #include "core/io/output_ownership.h"
+#include "studies/cli/command_scene.h"
 #include "studies/cli/options.h"
 #include "studies/cli/report_runner.h"
 #include "studies/cli/results_file.h"
 #include "studies/drivers/validity_map.h"
 #include "studies/parallel/process_group.h"
 #include "studies/parallel/spread_command.h"
+#include "studies/tools/run_phase.h"
 #include "studies/tools/format.h"
 
 namespace thinlayer {
@@ -39,9 +41,10 @@ int command_study_validity_map(const CLI::App& c, const StudyArgs& a) {
   std::string out_dir, name;
   std::unique_ptr<SceneFileBulk> bulk;
   try {
-    require_only(c, {"scene", "out", "quiet", "force", "threads", "tolerance", "max-nodes", "peak-distance",
-                     "thickness-ratios", "modulus-ratios", "poisson"},
+    require_only(c, {"scene", "out", "quiet", "force", "threads", "tolerance", "max-nodes", "mesh-timeout",
+                     "peak-distance", "thickness-ratios", "modulus-ratios", "poisson"},
                  "study validity-map");
+    start_mesh_clock(c, a.mesh_timeout);
     if (!given(c, "scene")) throw std::invalid_argument("study validity-map needs --scene FILE.json (the joint to map)");
     options.verbose = !a.quiet;
     if (given(c, "tolerance")) options.tolerance = a.tolerance;
@@ -72,10 +75,11 @@ int command_study_validity_map(const CLI::App& c, const StudyArgs& a) {
     if (!out_dir.empty() && is_root()) {  // the map's files in DIR, before the map
       check_replaceable(out_dir + "/results.h5", OutputKind::Results, rules.inputs, rules.force);
       check_replaceable(out_dir + "/validity_map_" + name + ".csv", OutputKind::Csv, rules.inputs, rules.force);
+      check_report_folder(out_dir + "/report");
     }
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
   } catch (const std::exception& e) {
-    if (is_root()) std::cerr << "thinlayer study: " << e.what() << "\n";
+    if (is_root()) print_message("study", e.what());
     return 2;
   }
   try {
@@ -94,11 +98,7 @@ int command_study_validity_map(const CLI::App& c, const StudyArgs& a) {
       write_checks(*out, r.checks);
       out->commit();
       std::printf("wrote %s and %s/validity_map_%s.csv\n", out->path().c_str(), out_dir.c_str(), name.c_str());
-      try {
-        run_report(out->path(), out_dir + "/report");
-      } catch (const std::runtime_error& e) {
-        std::cerr << "thinlayer study: the report was not written: " << e.what() << "\n";
-      }
+      run_report_keeping(out->path(), out_dir + "/report", {out->path(), out_dir + "/validity_map_" + name + ".csv"});
     });
     return command_status(failed == 0 ? 0 : 1);
   } catch (const std::exception& e) {

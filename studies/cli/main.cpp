@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 
 #include "core/io/output_target.h"
+#include "core/io/shown_text.h"
+#include "studies/tools/run_phase.h"
 #include "studies/cli/command_line.h"
 #include "studies/cli/command_solve.h"
 #include "studies/cli/command_study.h"
@@ -56,7 +58,7 @@ struct Thinlayer {
       return 0;
     } catch (const std::exception& e) {
       // Under mpirun every rank parsed the same arguments: one says so.
-      if (thinlayer::is_root()) std::cerr << "thinlayer " << name << ": " << e.what() << "\n";
+      if (thinlayer::is_root()) thinlayer::print_message(name, e.what());
       return 2;
     }
     if (command == solve) return thinlayer::command_solve(*command, solve_args);
@@ -88,7 +90,7 @@ int main(int argc, char** argv) {
   const std::string command = args[0];
   args.erase(args.begin());
   if (!thinlayer.command_named(command)) {
-    std::cerr << "thinlayer: unknown command '" << command << "' (see thinlayer --help)\n";
+    std::cerr << "thinlayer: unknown command '" << thinlayer::shown(command) << "' (see thinlayer --help)\n";
     return 2;
   }
   if ((command == "solve" || command == "verify") && !thinlayer::refuse_unless_one_process(command)) return 2;

@@ -13,6 +13,7 @@ namespace thinlayer {
 std::unique_ptr<H5Writer> open_results_file(const std::string& file, const OutputRules& rules) {
   check_replaceable(file, OutputKind::Results, rules.inputs, rules.force);
   auto out = std::make_unique<H5Writer>(file);
+  out->replace_only_under(rules);
   out->attr("/", "layout", std::string(results_layout));
   out->attr("/", "layout_version", results_layout_version);
   write_environment(*out);

@@ -20,16 +20,11 @@ constexpr const char* results_layout = results_layout_name;  // core/io/output_o
 // status legend, node_plus/node_minus, mesh/cell_body). The report reads versions 1 and 2.
 constexpr int results_layout_version = 2;
 
-// What a results file may replace (core/io/output_ownership.h): never one of the run's
-// inputs; an existing file that is no results file only with --force.
-struct OutputRules {
-  std::vector<InputFile> inputs;
-  bool force = false;
-};
-
 // Opens FILE (written on commit only), marked with the layout and the environment
 // (/environment: compiler, library versions, commit). Throws OutputError, before anything is
-// written, if FILE may not be replaced under `rules`.
+// written, if FILE may not be replaced under `rules` (core/io/output_ownership.h); the commit
+// judges it again under the same rules, and so does every file written beside it
+// (H5Writer::write_beside).
 std::unique_ptr<H5Writer> open_results_file(const std::string& file, const OutputRules& rules = {});
 
 // Creates DIR if needed and opens DIR/results.h5 as open_results_file does; the folders it

@@ -9,11 +9,8 @@ namespace thinlayer {
 
 void report_scene_study(const std::string& dir, bool verbose) {
   if (verbose) std::cerr << "[scene] report\n";
-  try {
-    run_report(dir + "/results.h5", dir + "/report");  // which says "wrote DIR/report/index.html"
-  } catch (const std::runtime_error& e) {
-    std::cerr << "thinlayer study: the report was not written: " << e.what() << "\n";
-  }
+  // It says "wrote DIR/report/index.html"; refused, it throws OutputError naming what is kept.
+  run_report_keeping(dir + "/results.h5", dir + "/report", {dir + "/results.h5", dir + "/bondline_fields.csv"});
 }
 
 }  // namespace thinlayer

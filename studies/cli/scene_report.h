@@ -7,7 +7,8 @@
 namespace thinlayer {
 
 // Runs the report on DIR/results.h5 into DIR/report; says so on stderr unless quiet. A report
-// that fails is one line on stderr and leaves the results as they are (they are written).
+// that fails or is refused throws OutputError (exit 2: one line naming the files kept, which are
+// written). Its folder is checked before the study (check_report_folder, report_runner.h).
 void report_scene_study(const std::string& dir, bool verbose);
 
 }  // namespace thinlayer

@@ -483,8 +483,7 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
         write_scene_file_scene(out, *s, *f.bulk);
         csv.push_back({f.bulk.get(), s, s->record.id, f.bulk->spec().h_interface.value_or(0.0)});
       }
-  const std::string folder = std::filesystem::path(out.path()).parent_path().string();
-  write_text_atomically((folder.empty() ? std::string(".") : folder) + "/bondline_fields.csv", bondline_fields_csv(csv));
+  out.write_beside("bondline_fields.csv", OutputKind::Csv, bondline_fields_csv(csv));
 }
 
 }  // namespace thinlayer

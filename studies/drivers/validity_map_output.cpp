@@ -201,9 +201,7 @@ void write_validity_map(H5Writer& out, const ValidityMapResult& r, const Validit
   out.attr(g, "wall_time_threads", r.threads);
   out.attr(g, "law", std::string("the finite spring law of the glue at its own thickness: lambda_bar = lambda_g/t, "
                                  "mu_bar = mu_g/t (bilateral where both faces are bonded; Table 1's with f otherwise)"));
-  const std::string folder = std::filesystem::path(out.path()).parent_path().string();
-  write_text_atomically((folder.empty() ? std::string(".") : folder) + "/validity_map_" + r.scene + ".csv",
-                        validity_map_csv(r, o));
+  out.write_beside("validity_map_" + r.scene + ".csv", OutputKind::Csv, validity_map_csv(r, o));
 }
 
 }  // namespace thinlayer

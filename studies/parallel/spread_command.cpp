@@ -48,9 +48,9 @@ int command_status(int status) { return broadcast_from_root(status); }
 
 int command_failed(const std::string& command, const std::exception& e) {
   const bool everyone_knows = dynamic_cast<const ErrorOnEveryRank*>(&e) != nullptr;
-  if (rank_count() == 1 || (everyone_knows && is_root())) std::cerr << "thinlayer " << command << ": " << failure_text(e) << "\n";
+  if (rank_count() == 1 || (everyone_knows && is_root())) print_message(command, failure_text(e));
   if (rank_count() == 1 || everyone_knows) return 2;
-  std::cerr << "thinlayer " << command << " (rank " << rank() << " of " << rank_count() << "): " << failure_text(e) << "\n";
+  print_message(command + " (rank " + std::to_string(rank()) + " of " + std::to_string(rank_count()) + ")", failure_text(e));
   abort_all_ranks(2);
 }
 

@@ -1,8 +1,11 @@
 #include "studies/tools/run_phase.h"
 
 #include <exception>
+#include <iostream>
 #include <mutex>
 #include <new>
+
+#include "core/io/shown_text.h"
 
 namespace thinlayer {
 
@@ -35,6 +38,10 @@ RunPhase::~RunPhase() {
 std::string run_phase() {
   std::lock_guard<std::mutex> lock(phase_mutex());
   return phase();
+}
+
+void print_message(const std::string& command, const std::string& message) {
+  std::cerr << "thinlayer " + command + ": " + shown(message) + "\n" << std::flush;
 }
 
 std::string failure_text(const std::exception& e) {

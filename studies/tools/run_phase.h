@@ -4,7 +4,7 @@
 // "std::bad_alloc" and never exit 1 "result written" with nothing written).
 //
 //   RunPhase phase("solving the limit mode");   // until the end of the scope
-//   ... catch (const std::exception& e) { std::cerr << "thinlayer solve: " << failure_text(e); }
+//   ... catch (const std::exception& e) { print_message("solve", failure_text(e)); }
 //
 // The phase is the main thread's (the command's); a study's worker threads run inside one. A
 // phase left by an exception stays the phase until the next one starts: the handler that
@@ -31,5 +31,10 @@ std::string run_phase();
 
 // e.what(), or for std::bad_alloc "out of memory while <phase> (std::bad_alloc): ...".
 std::string failure_text(const std::exception& e);
+
+// "thinlayer <command>: <message>" and a newline on stderr, the message shown as every message
+// is (core/io/shown_text.h: one line, a value from a file or from gmsh escaped). Every line
+// thinlayer says about a run goes through here.
+void print_message(const std::string& command, const std::string& message);
 
 }  // namespace thinlayer
