@@ -62,25 +62,23 @@ void hold(Model& model, int body, const std::string& set, int c, F value) {
 }
 
 // The limit solve (bonded: one sparse solve, its factorisation kept), then the first-order answer's
-// δu, as SPEC §3 S6's estimate computes it (cases/scene/scene_first_order.cpp), full numbering.
+// δu, as SPEC §3 S6's estimate computes it (cases/scene/scene_first_order.cpp), full numbering. S runs
+// between body `plus` (its bottom) and body `minus` (its top) over the nodes [first, size − drop_last).
 struct Answer {
   Eigen::VectorXd u, delta;  // full DOF numbering, mm
 };
-Answer first_order(const Model& model) {
+Answer first_order_answer(const Model& model, int plus, int minus, int drop_last, const LayerAtThickness& layer) {
   const LinearSystem system(model);
-  const InterfaceLaw law = InterfaceLaw::make_bilateral(lambda_g / t, mu_g / t);
-  const Mesh& lower = model.bodies[0].mesh;
-  const Mesh& upper = model.bodies[1].mesh;
-  // S: the nodes between the sides (a side's nodes are held, and an interface node may not be): the
-  // layer goes on into the supports there (LayerAtThickness::free_ends false).
-  auto inner = [](std::vector<int> nodes) { return std::vector<int>(nodes.begin() + 1, nodes.end() - 1); };
-  const ContactProblem problem(system, {paired_interface("S", law, model, 1, inner(upper.node_set("bottom")),
-                                                         upper.edge_set("bottom"), 0, inner(lower.node_set("top")), 1e-12)});
+  const InterfaceLaw law = InterfaceLaw::make_bilateral(layer.lambda / layer.thickness, layer.mu / layer.thickness);
+  const Mesh& top = model.bodies[minus].mesh;
+  const Mesh& bottom = model.bodies[plus].mesh;
+  // The first node (x = 0) is held in these tests, and a node of S may not be.
+  auto part = [drop_last](std::vector<int> nodes) { return std::vector<int>(nodes.begin() + 1, nodes.end() - drop_last); };
+  const ContactProblem problem(system, {paired_interface("S", law, model, plus, part(bottom.node_set("bottom")),
+                                                         bottom.edge_set("bottom"), minus, part(top.node_set("top")), 1e-12)});
   MixedSystem mixed(problem);
   const SolveReport limit = solve_bonded(problem, {}, &mixed);
   EXPECT_TRUE(limit.converged) << limit.message;
-  LayerAtThickness layer{t, lambda_g, mu_g, PlaneHypothesis::Strain};
-  layer.free_ends = false;
   const Eigen::VectorXd u = system.expand(limit.u);
   const FirstOrderLoad load =
       first_order_layer_load(problem, {layer}, u, limit.r, answer_statuses(problem, limit.r, 1e-6));
@@ -89,6 +87,14 @@ Answer first_order(const Model& model) {
     if (system.free_index(g) >= 0) forces[system.free_index(g)] = load.body_forces[g];
   const MixedSystem::Answer d = mixed.solve_again(forces, load.row_values);
   return {u, system.scatter(d.u)};
+}
+
+// The bilayer held on its sides: S the nodes between them (a side's nodes are held), the layer going
+// on into the supports there (LayerAtThickness::free_ends false).
+Answer first_order(const Model& model) {
+  LayerAtThickness layer{t, lambda_g, mu_g, PlaneHypothesis::Strain};
+  layer.free_ends = false;
+  return first_order_answer(model, 1, 0, 1, layer);
 }
 
 TEST(FirstOrderLayer, UniformShearIsTheSpringsExactly) {
@@ -149,31 +155,11 @@ TEST(FirstOrderLayer, TensionAlongTheLayerThinsItByItsPoissonRatio) {
 // The plane modulus of a membrane whose normal stress is free (plane strain): E* = 4μ(λ+μ)/(λ+2μ).
 double plane_modulus(double lambda, double mu) { return 4 * mu * (lambda + mu) / (lambda + 2 * mu); }
 
-// The limit answer and its first-order δu of a model whose interface S runs between body `plus` (its
-// bottom) and body `minus` (its top) from the second node on (the first, at x = 0, is held: a node of S
-// may not be), with free ends: S's last node is free and S's first node is where the layer's held
-// x = 0 end would be, loaded by nothing there in these tests (σ = 0 and ∂_s m_s = 0 at it, or the
-// force that is checked).
+// The same with free ends, S from the second node (x = 0 is held) to the last: S's last node is free,
+// and S's first node is where the layer's held x = 0 end would be, loaded by nothing there in these
+// tests (σ = 0 and ∂_s m_s = 0 at it, or the force that is checked).
 Answer first_order_free_ends(const Model& model, int plus, int minus, double lambda, double mu, double thickness) {
-  const LinearSystem system(model);
-  const InterfaceLaw law = InterfaceLaw::make_bilateral(lambda / thickness, mu / thickness);
-  const Mesh& top = model.bodies[minus].mesh;
-  const Mesh& bottom = model.bodies[plus].mesh;
-  auto tail = [](std::vector<int> nodes) { return std::vector<int>(nodes.begin() + 1, nodes.end()); };
-  const ContactProblem problem(system, {paired_interface("S", law, model, plus, tail(bottom.node_set("bottom")),
-                                                         bottom.edge_set("bottom"), minus, tail(top.node_set("top")), 1e-12)});
-  MixedSystem mixed(problem);
-  const SolveReport limit = solve_bonded(problem, {}, &mixed);
-  EXPECT_TRUE(limit.converged) << limit.message;
-  const LayerAtThickness layer{thickness, lambda, mu, PlaneHypothesis::Strain};
-  const Eigen::VectorXd u = system.expand(limit.u);
-  const FirstOrderLoad load =
-      first_order_layer_load(problem, {layer}, u, limit.r, answer_statuses(problem, limit.r, 1e-6));
-  Eigen::VectorXd forces = Eigen::VectorXd::Zero(system.num_free());
-  for (int g = 0; g < system.num_dofs(); ++g)
-    if (system.free_index(g) >= 0) forces[system.free_index(g)] = load.body_forces[g];
-  const MixedSystem::Answer d = mixed.solve_again(forces, load.row_values);
-  return {u, system.scatter(d.u)};
+  return first_order_answer(model, plus, minus, 0, LayerAtThickness{thickness, lambda, mu, PlaneHypothesis::Strain});
 }
 
 // A traction on a body's right side, one EdgeTraction per edge, its value at the edge's mid-height y.
