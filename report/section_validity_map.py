@@ -54,6 +54,7 @@ def joint_block(ctx, s, name):
     out.append(rule_table(s))
     out.append(estimate_figure(ctx, s, name))
     out.append(estimate_table(s))
+    out.append(order_one_table(s))
     return "\n".join(out)
 
 
@@ -172,3 +173,24 @@ def estimate_table(s):
     return ("<p>SPEC 3 S6 judged on the map: at the cells above the mesh floor, the estimate within a factor "
             f"{num(attr(s, 'factor'))} of the measured distance.</p>" +
             table(["quantity", "cells above the floor", "within the factor", "of which ends resolved (h/2 ≤ 3t)"], rows))
+
+
+def order_one_table(s):
+    """Order one: the layer's distance to the first-order answer u1 beside its distance to the law's u0."""
+    if "order1_u" not in s:
+        return ""
+    rows = []
+    for q in QUANTITIES:
+        m, o1, resolved = array(s, f"measured_{q}"), array(s, f"order1_{q}"), array(s, f"resolved_{q}")
+        above = array(s, f"order1_resolved_{q}")
+        ok = (resolved > 0) & (array(s, "converged") > 0)
+        ratio = o1[ok] / np.where(m[ok] > 0, m[ok], np.nan)
+        rows.append([esc(q), str(int(np.sum(ok))), str(int(np.sum(ok & (3 * o1 <= m)))),
+                     num(float(np.nanmedian(ratio))) if np.isfinite(ratio).any() else "–",
+                     str(int(np.sum(ok & (above > 0))))])
+    return ("<p>Order one: the layer at h/2 against the first-order answer u1 (the estimate's answer itself, "
+            "without its end cells where h/2 > 3t) beside its distance to the law's answer (order 0), at the cells "
+            "above the mesh floor. Where the mesh still moves the order-1 distance by more than half between h and "
+            "h/2, it is the mesh's, not u1's (studies/limit_error_estimate.md, \"Order one\").</p>" +
+            table(["quantity", "cells above the floor", "order 1 ≤ order 0 / 3", "median order 1 / order 0",
+                   "order 1 above its own floor"], rows))

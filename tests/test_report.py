@@ -322,6 +322,10 @@ def write_validity_map(f, name="a-joint"):
         g[f"ends_resolved_{q}"] = np.array([0, 1, 0, 1])
         g[f"within_{q}"] = np.array([1, 1, 0, 0])
         g[f"rule_{q}"] = np.array([-1.0, 1.0, -1.0, -1.0])
+        g[f"order1_{q}"] = np.array([2e-4, 4e-3, 1e-5, 1e-4])  # order 1 <= order 0 / 3 at the first cell only
+        g[f"order1_h_{q}"] = np.array([3e-4, 4e-3, 2e-5, 2e-4])
+        g[f"order1_ratio_{q}"] = g[f"order1_{q}"][()] / g[f"measured_{q}"][()]
+        g[f"order1_resolved_{q}"] = np.array([1, 1, 0, 0])
     for k, v in dict(characteristic_length=1.4, E_a=70000.0, peak_distance=0.5, peak_distance_reason="two elements",
                      h=0.25, h_fine=0.125, factor=2.0, wall_time_s=3.0, wall_time_ranks=1, wall_time_threads=1).items():
         g.attrs[k] = v
@@ -593,6 +597,9 @@ class ReportTest(unittest.TestCase):
             self.assertTrue(os.path.isfile(os.path.join(out, "figures", f"validity_map_a_joint_{q}.png")), q)
         self.assertIn("Where the paper's 3 % / 30x rule picks a 0 or ∞ law", html)  # the one cell it changes
         self.assertIn("4 cells, 3 converged", html)  # the failed cell counted, not dropped
+        # Order one: the two converged cells above the floor, the first within a third of order 0.
+        self.assertIn("Order one: the layer at h/2 against the first-order answer u1", html)
+        self.assertIn('<td class="l">u</td><td>2</td><td>1</td>', html)
         self.assertNothingLeftBehind()
 
 

@@ -97,6 +97,27 @@ void the_estimate_on_one_cell() {
   }
 }
 
+void the_order_one_column() {
+  // The layer against the first-order answer u1 beside its distance to the law's answer u0, at both
+  // levels, every quantity. The first-order theory's claim on the adherents: the layer is nearer u1 than
+  // u0 at every cell, and at the thick glue whose end zone the mesh resolves (t/L = 0.1, h/2 <= 3t) within
+  // a third of the order-0 distance (measured 2026-11-28: ratios 0.17, 0.53 at t/L = 0.01; 0.13, 0.054
+  // at 0.1).
+  for (const MapCell& c : map().cells) {
+    for (const MapCellLevel* level : {&c.coarse, &c.fine})
+      for (const std::string& q : map_quantities()) {
+        ASSERT_TRUE(level->order1.count(q) && level->order1_interior.count(q)) << q;
+        EXPECT_TRUE(std::isfinite(level->order1.at(q)) && level->order1.at(q) >= 0) << q;
+      }
+    const MapJudgement u = judge(c, "u", 2);
+    EXPECT_LT(u.order1, u.measured) << c.spec.t_over_L << " " << c.spec.E_ratio;
+    if (c.spec.t_over_L == 1e-1) {
+      EXPECT_TRUE(u.ends_resolved);
+      EXPECT_LE(3 * u.order1, u.measured) << c.spec.E_ratio << ": order 1 " << u.order1 << ", order 0 " << u.measured;
+    }
+  }
+}
+
 void the_csv_has_a_row_per_cell() {
   std::istringstream csv(validity_map_csv(map(), two_by_two()));
   int rows = 0;
@@ -110,7 +131,46 @@ TEST(ValidityMap, TwoByTwoOnTheDoubleLap) {
   a_thicker_glue_is_farther_from_its_law();
   the_papers_rule_is_the_classification_of_the_glue();
   the_estimate_on_one_cell();
+  the_order_one_column();
   the_csv_has_a_row_per_cell();
+}
+
+TEST(ValidityMap, FirstOrderAnswerHasTwoFacesInEquilibriumAndItsReactions) {
+  // u1 of the shipped double lap's own glue (0.2 mm), as the map compares it with the layer: each
+  // bondline's two faces (S+ on the plus adherent, S- on the minus), which differ where the layer
+  // carries force along S (the membrane and the squares' m-force act on both faces alike) but exert on
+  // the adherents forces of equal resultant (the layer's own equilibrium: the first-order load's
+  // m-forces sum to zero, its end deficits and spring misfits act in pairs); and the reactions of the
+  // supports, which balance (the joint is held by its clamp and grip only).
+  SolverOptions options;
+  options.tolerance = 1e-10;
+  LimitSolveExtras extras;
+  extras.first_order = true;
+  const SceneFileScene limit =
+      solve_scene_file_limit(double_lap(), SolverKind::Fast, options, 0, default_status_tolerance, false, extras);
+  ASSERT_TRUE(limit.first_order.record) << limit.first_order.note;
+  const SceneRecord& r = *limit.first_order.record;
+  ASSERT_EQ(r.interfaces.size(), 4u);  // two bondlines, two faces each
+  for (std::size_t b = 0; b < 2; ++b) {
+    const InterfaceFields &plus = r.interfaces[2 * b], &minus = r.interfaces[2 * b + 1];
+    EXPECT_EQ(plus.name.back(), '+');
+    EXPECT_EQ(minus.name.back(), '-');
+    Eigen::Vector2d resultant_plus = Eigen::Vector2d::Zero(), resultant_minus = Eigen::Vector2d::Zero();
+    double scale = 0, differ = 0;
+    for (Eigen::Index k = 0; k < plus.sigma_N.size(); ++k) {
+      const Eigen::Vector2d n = plus.normal.row(k).transpose(), t(n.y(), -n.x());
+      resultant_plus += (-n * plus.sigma_N[k] + t * plus.sigma_T[k]) * plus.length[k];
+      resultant_minus += (-n * minus.sigma_N[k] + t * minus.sigma_T[k]) * plus.length[k];
+      scale += std::hypot(plus.sigma_N[k], plus.sigma_T[k]) * plus.length[k];
+      differ = std::max(differ, std::abs(plus.sigma_T[k] - minus.sigma_T[k]));
+    }
+    EXPECT_LT((resultant_plus - resultant_minus).norm(), 1e-9 * scale) << b;
+    EXPECT_GT(differ, 0.0) << b;  // the faces are not one
+  }
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  double largest = 0;
+  for (const auto& [name, R] : r.reactions) sum += R, largest = std::max(largest, R.norm());
+  EXPECT_LT(sum.norm(), 1e-8 * largest);
 }
 
 }  // namespace

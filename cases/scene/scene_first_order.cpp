@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "cases/scene/scene_file_scenes.h"
+#include "cases/scene/scene_model.h"
 #include "core/solvers/answer_statuses.h"
 #include "core/solvers/first_order_layer.h"
 #include "core/solvers/layer_end_cell.h"
@@ -53,18 +54,37 @@ std::optional<SceneRecord> answer(const SceneFileBulk& bulk, const ContactProble
   const FirstOrderLoad load = first_order_layer_load(problem, layers, system.expand(limit.u), limit.r, statuses);
   const MixedSystem::Answer delta = factored.solve_again(gather_free(system, load.body_forces), load.row_values);
   if (delta.singular || !delta.u.allFinite() || !delta.r.allFinite()) return std::nullopt;
-  SolveReport first = limit;
+  SolveReport first = limit;  // u₁ = u₀ + δu, and the spring's force r₀ + δr
   first.u = limit.u + delta.u;
   first.r = limit.r + delta.r;
-  // The layer's traction on the plus face: the spring's force and the first-order force on the
-  // plus side, in the rows' convention (force on the plus side = −n r_N + t r_T).
+  first.message = "the first-order layer answer about the limit answer (one extra solve on its statuses)";
+  // The layer's traction on each face: the spring's force and the first-order load's part on that side,
+  // in the rows' convention (force on the plus side = −n r_N + t r_T, on the minus side its opposite).
+  SolveReport plus = first, minus = first;
   for (int k = 0; k < problem.num_nodes(); ++k) {
     const InterfaceNode& n = problem.node(k);
-    first.r[2 * k] += -n.normal.dot(load.plus_force[k]);
-    first.r[2 * k + 1] += n.tangent().dot(load.plus_force[k]);
+    plus.r[2 * k] -= n.normal.dot(load.plus_force[k]);
+    plus.r[2 * k + 1] += n.tangent().dot(load.plus_force[k]);
+    minus.r[2 * k] += n.normal.dot(load.minus_force[k]);
+    minus.r[2 * k + 1] -= n.tangent().dot(load.minus_force[k]);
   }
-  first.message = "the first-order layer answer about the limit answer (one extra solve on its statuses)";
-  return record_scene(id, bulk.model(), problem, first, status_tolerance);
+  SceneRecord record = record_scene(id, bulk.model(), problem, plus, status_tolerance);
+  // The supports supply what the loads, the springs and the first-order load leave unbalanced.
+  const Eigen::VectorXd spring = system.scatter(problem.B().transpose() * first.r);
+  record.reactions = system.reactions(system.expand(first.u), spring + load.body_forces);
+  // Each bondline's two faces, as a layer record has them (S+ on the plus adherent, S- on the minus).
+  std::vector<InterfaceFields> faces;
+  const std::vector<InterfaceFields> minus_faces = interface_fields(problem, minus, status_tolerance);
+  for (std::size_t i = 0; i < record.interfaces.size(); ++i) {
+    faces.push_back(record.interfaces[i]);
+    faces.back().name = interface_name(bulk.spec(), static_cast<int>(i), "S+");
+    faces.push_back(minus_faces[i]);
+    faces.back().name = interface_name(bulk.spec(), static_cast<int>(i), "S-");
+    faces.back().node_plus = record.interfaces[i].node_plus;
+    faces.back().node_minus = record.interfaces[i].node_minus;
+  }
+  record.interfaces = std::move(faces);
+  return record;
 }
 
 }  // namespace

@@ -33,6 +33,7 @@ class LoadBuilder {
     load_.body_forces = Eigen::VectorXd::Zero(u_full.size());
     load_.row_values = Eigen::VectorXd::Zero(2 * problem.num_nodes());
     load_.plus_force.assign(problem.num_nodes(), Eigen::Vector2d::Zero());
+    load_.minus_force.assign(problem.num_nodes(), Eigen::Vector2d::Zero());
   }
 
   Eigen::Vector2d displacement(int dof_x) const {
@@ -45,10 +46,10 @@ class LoadBuilder {
   // A force on one side of node k (global problem numbering).
   void add(int k, bool plus, const Eigen::Vector2d& f) {
     const InterfaceNode& n = problem_.node(k);
+    (plus ? load_.plus_force : load_.minus_force)[k] += f;  // the face's traction, a foundation's too
     const int dof = plus ? n.plus_dof_x : n.minus_dof_x;
     if (dof < 0) return;  // the rigid foundation takes it
     load_.body_forces.segment<2>(dof) += f;
-    if (plus) load_.plus_force[k] += f;
   }
   void add_row(int row, double value) { load_.row_values[row] += value; }
   FirstOrderLoad take() { return std::move(load_); }

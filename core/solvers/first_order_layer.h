@@ -60,9 +60,12 @@ struct LayerAtThickness {
 struct FirstOrderLoad {
   Eigen::VectorXd body_forces;  // full DOF numbering (LinearSystem), force unit: on the adherents
   Eigen::VectorXd row_values;   // per interface row (2 per node): the jump equation's right-hand side
-  // Per node of the problem (all interfaces in order): the part of body_forces acting on its plus
-  // side (force unit, x and y): with the spring's force it makes the layer's traction on the plus face.
-  std::vector<Eigen::Vector2d> plus_force;
+  // Per node of the problem (all interfaces in order): the parts of body_forces acting on its plus and
+  // its minus side (force unit, x and y): with the spring's force they make the layer's traction on
+  // each face. The two differ by what the layer carries along S (the membrane, the squares' m-force:
+  // ∂W/∂m acts half on each face, with the same sign), so the faces' tractions differ at first order,
+  // as the meshed layer's S+ and S- do.
+  std::vector<Eigen::Vector2d> plus_force, minus_force;
 };
 
 // layers: one per interface of `problem`, in order. u_full: the limit answer's full nodal

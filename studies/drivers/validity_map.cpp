@@ -88,6 +88,17 @@ MapJudgement judge(const MapCell& cell, const std::string& q, double factor) {
     j.floor = std::abs(cell.coarse.measured.at(q) - j.measured);
     j.resolved = j.measured > 2 * j.floor && cell.shear_lag >= 4 * read.h;
   }
+  // Order one, against the same u₁ as the estimate judged (with its end cells where the mesh resolves them).
+  const auto& order1 = [&](const MapCellLevel& l) -> const std::map<std::string, double>& {
+    return j.ends_resolved ? l.order1 : l.order1_interior;
+  };
+  if (order1(read).count(q)) {
+    j.order1 = order1(read).at(q);
+    if (two_levels && order1(cell.coarse).count(q)) {
+      j.order1_floor = std::abs(order1(cell.coarse).at(q) - j.order1);
+      j.order1_resolved = j.order1 > 2 * j.order1_floor;
+    }
+  }
   const double e = j.judged();
   j.within = j.measured > 0 && e > 0 && e <= factor * j.measured && j.measured <= factor * e;
   return j;

@@ -76,6 +76,12 @@ struct MapJudgement {
   bool resolved = false;              // above the mesh floor (both criteria)
   bool within = false;                // the estimate judged within the factor of measured
   double judged() const { return ends_resolved ? estimate : interior; }
+  // Order one: the layer's distance to the first-order answer u₁ (to u₁ without its end cells where the
+  // mesh does not resolve the end zone, as the estimate), its own mesh floor |e₁(h) − e₁(h/2)|, and its
+  // ratio to the order-0 distance `measured` (0 where measured is 0).
+  double order1 = 0, order1_floor = 0;
+  bool order1_resolved = false;       // e₁(h/2) > 2 |e₁(h) − e₁(h/2)|: the mesh moves it by less than half
+  double order1_ratio() const { return measured > 0 ? order1 / measured : 0.0; }
 };
 MapJudgement judge(const MapCell& cell, const std::string& quantity, double factor);
 

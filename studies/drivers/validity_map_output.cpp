@@ -1,5 +1,6 @@
 #include "studies/drivers/validity_map_output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -33,6 +34,27 @@ std::string entry(const MapCell& c, const std::string& q, double factor) {
   std::string s = significant(100 * j.measured, 2);
   if (c.fine.h > 0 && !j.resolved) s += "~";
   return s;
+}
+
+// Order one judged on the map: per quantity, at the cells above the mesh floor, how often the layer is
+// within a third of the order-0 distance from the first-order answer u1, and the median ratio.
+void print_order_one(const ValidityMapResult& r, const ValidityMapOptions& o) {
+  std::printf("\n  Order one: the layer against the first-order answer u1 (at %s, cells above the mesh floor; ratio = order 1 / order 0):\n",
+              r.h_fine > 0 ? "h/2" : "h");
+  for (const std::string& q : map_quantities()) {
+    std::vector<double> ratios;
+    int third = 0;
+    for (const MapCell& c : r.cells) {
+      const MapJudgement j = judge(c, q, o.factor);
+      if (!j.converged || !j.resolved) continue;
+      ratios.push_back(j.order1_ratio());
+      third += 3 * j.order1 <= j.measured;
+    }
+    std::sort(ratios.begin(), ratios.end());
+    const std::string median = ratios.empty() ? "-" : significant(ratios[ratios.size() / 2], 2);
+    std::printf("    %-11s order 1 <= order 0 / 3 at %d of %zu resolved cells; median ratio %s\n", q.c_str(), third,
+                ratios.size(), median.c_str());
+  }
 }
 
 }  // namespace
@@ -70,6 +92,7 @@ void print_validity_map(const ValidityMapResult& r, const ValidityMapOptions& o)
     }
     std::printf("    %-11s within a factor %s at %d of %d resolved cells\n", q.c_str(), plain(o.factor).c_str(), within, resolved);
   }
+  print_order_one(r, o);
   // The paper's rule.
   int degenerate = 0;
   double worst = 0;
@@ -96,11 +119,18 @@ std::string validity_map_csv(const ValidityMapResult& r, const ValidityMapOption
       << "estimate_<q> SPEC 3 S6's at the same level (interior_<q> without its end cells), floor_<q> = |measured_h - measured|, "
       << "resolved_<q>: above the mesh floor (measured > 2 floor and 4 elements over the shear-lag length), ends_resolved_<q>: "
       << "h/2 <= 3t (the estimate judged is estimate_<q>, else interior_<q>), within_<q>: the judged estimate within the factor, "
-      << "rule_<q> the paper's rule's law against the layer (empty where it picks the finite law)\n";
+      << "rule_<q> the paper's rule's law against the layer (empty where it picks the finite law)\n"
+      << "# order one (the last columns): order1_<q> the layer against the first-order answer u1 at h/2 (u1 without its end "
+      << "cells where ends_resolved_<q> = 0, as the estimate judged), order1_h_<q> the same at h, order1_ratio_<q> = "
+      << "order1_<q> / measured_<q>, order1_resolved_<q>: order1 > 2 |order1_h - order1|, order1_full_<q> and "
+      << "order1_interior_<q> against u1 with and without its end cells at h/2\n";
   csv << "t_over_L,E_ratio,nu,thickness_mm,E_g,shear_lag_mm,law_case,rule_case,converged,failure";
   for (const std::string& q : map_quantities())
     csv << ",measured_" << q << ",measured_h_" << q << ",estimate_" << q << ",interior_" << q << ",floor_" << q << ",resolved_"
         << q << ",ends_resolved_" << q << ",within_" << q << ",rule_" << q;
+  for (const std::string& q : map_quantities())
+    csv << ",order1_" << q << ",order1_h_" << q << ",order1_ratio_" << q << ",order1_resolved_" << q << ",order1_full_" << q
+        << ",order1_interior_" << q;
   csv << "\n";
   for (const MapCell& c : r.cells) {
     std::string failure = c.coarse.failure.empty() ? c.fine.failure : c.coarse.failure;
@@ -116,6 +146,14 @@ std::string validity_map_csv(const ValidityMapResult& r, const ValidityMapOption
           << "," << j.interior << "," << j.floor << "," << (j.resolved ? 1 : 0) << "," << (j.ends_resolved ? 1 : 0) << ","
           << (j.within ? 1 : 0) << ",";
       if (c.rule_solved && c.rule_measured.count(q)) csv << c.rule_measured.at(q);
+    }
+    for (const std::string& q : map_quantities()) {
+      const MapJudgement j = judge(c, q, o.factor);
+      const MapCellLevel& read = c.fine.h > 0 ? c.fine : c.coarse;
+      auto at = [&q](const std::map<std::string, double>& m) { return m.count(q) ? m.at(q) : 0.0; };
+      const double order1_h = at(j.ends_resolved ? c.coarse.order1 : c.coarse.order1_interior);
+      csv << "," << j.order1 << "," << order1_h << "," << j.order1_ratio() << ","
+          << (j.order1_resolved ? 1 : 0) << "," << at(read.order1) << "," << at(read.order1_interior);
     }
     csv << "\n";
   }
@@ -184,6 +222,24 @@ void write_validity_map(H5Writer& out, const ValidityMapResult& r, const Validit
         "1: above the mesh floor: measured > 2 floor (the mesh moves it by less than half) and 4 elements over the shear-lag length");
     out.described_dataset(g + "/within_" + q, within, "", "1: the judged estimate (estimate_ or interior_) within the factor of the measured distance");
     out.described_dataset(g + "/rule_" + q, rule_q, "1 (relative)", "the paper's rule's law against the layer at h/2 (-1: it picks the finite law): " + d);
+  }
+  for (const std::string& q : map_quantities()) {  // order one: the layer against the first-order answer u1
+    std::vector<double> order1, order1_h, ratio;
+    std::vector<int> resolved;
+    for (const MapCell& c : r.cells) {
+      const MapJudgement j = judge(c, q, o.factor);
+      const auto& coarse = j.ends_resolved ? c.coarse.order1 : c.coarse.order1_interior;
+      order1.push_back(j.order1);
+      order1_h.push_back(coarse.count(q) ? coarse.at(q) : 0.0);
+      ratio.push_back(j.order1_ratio());
+      resolved.push_back(j.order1_resolved ? 1 : 0);
+    }
+    const std::string d = descriptions().at(q);
+    out.described_dataset(g + "/order1_" + q, order1, "1 (relative)",
+        "order one: the layer against the first-order answer u1 at h/2 (u1 without its end cells where ends_resolved_<q> is 0): " + d);
+    out.described_dataset(g + "/order1_h_" + q, order1_h, "1 (relative)", "the same at h: " + d);
+    out.described_dataset(g + "/order1_ratio_" + q, ratio, "1", "order1_<q> / measured_<q>: order one's distance over order zero's");
+    out.described_dataset(g + "/order1_resolved_" + q, resolved, "", "1: order1 > 2 |order1_h - order1| (the mesh moves it by less than half)");
   }
   out.attr(g, "description", std::string("SPEC 3 S3, the engineer's validity map: one row per cell (nu outermost, then "
                                          "E_ratio, then t_over_L); studies/drivers/validity_map.h"));

@@ -77,11 +77,13 @@ void get(ByteReader& r, DovetailScene& s) {
 
 void put(ByteWriter& w, const MapCellLevel& c) {
   put(w, c.h), put(w, c.converged), put(w, c.failure), put(w, c.layer_residual), put(w, c.limit_residual);
-  put(w, c.measured), put(w, c.estimate), put(w, c.interior), put(w, c.layer_time_s), put(w, c.limit_time_s), put(w, c.estimate_time_s);
+  put(w, c.measured), put(w, c.estimate), put(w, c.interior), put(w, c.order1), put(w, c.order1_interior);
+  put(w, c.layer_time_s), put(w, c.limit_time_s), put(w, c.estimate_time_s);
 }
 void get(ByteReader& r, MapCellLevel& c) {
   get(r, c.h), get(r, c.converged), get(r, c.failure), get(r, c.layer_residual), get(r, c.limit_residual);
-  get(r, c.measured), get(r, c.estimate), get(r, c.interior), get(r, c.layer_time_s), get(r, c.limit_time_s), get(r, c.estimate_time_s);
+  get(r, c.measured), get(r, c.estimate), get(r, c.interior), get(r, c.order1), get(r, c.order1_interior);
+  get(r, c.layer_time_s), get(r, c.limit_time_s), get(r, c.estimate_time_s);
 }
 
 void put(ByteWriter& w, const MapCell& c) {

@@ -75,8 +75,14 @@ MapCellLevel solve_level(const SceneFileBulk& meshed, const SceneSpec& spec, dou
     level.limit_residual = limit.report.residual.value();
     level.converged = layer.report.converged && limit.report.converged;
     level.measured = distances(bulk, layer.record, limit.record, d);
-    if (limit.first_order.record) level.estimate = distances(bulk, *limit.first_order.record, limit.record, d);
-    if (limit.first_order.interior) level.interior = distances(bulk, *limit.first_order.interior, limit.record, d);
+    if (limit.first_order.record) {
+      level.estimate = distances(bulk, *limit.first_order.record, limit.record, d);
+      level.order1 = distances(bulk, layer.record, *limit.first_order.record, d);
+    }
+    if (limit.first_order.interior) {
+      level.interior = distances(bulk, *limit.first_order.interior, limit.record, d);
+      level.order1_interior = distances(bulk, layer.record, *limit.first_order.interior, d);
+    }
     cell.law_case = case_letters(laws);
     std::vector<InterfaceLaw> rules;
     bool differs = false;

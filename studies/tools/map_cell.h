@@ -8,7 +8,8 @@
 //   - the finite spring law of that glue at its own t, stated here (not taken from a classification):
 //     λ̄ = λ_g/t, μ̄ = μ_g/t, i.e. K_N = (λ_g+2μ_g)/t, K_T = μ_g/t, bilateral where both faces are
 //     bonded, Table 1's with the bondline's f otherwise (core/interface/glue.h, layer_limit_law);
-//   - its first-order answer, SPEC §3 S6's estimate (studies/tools/limit_error_estimate.h);
+//   - its first-order answer u₁, SPEC §3 S6's estimate (studies/tools/limit_error_estimate.h), and how
+//     far the layer is from u₁ itself (order 1) beside how far it is from the law's answer u₀ (order 0);
 // on the scene's mesh and on the mesh of half its element size (the mesh floor kept apart), and
 // at the finer one the law the paper's 3 % / 30x rule would choose (SPEC §1.3, classified_law), solved
 // where it differs from the finite law, against the same layer.
@@ -40,6 +41,9 @@ struct MapCellLevel {
   std::map<std::string, double> measured;   // the layer against the finite law
   std::map<std::string, double> estimate;   // the first-order answer against the finite law (S6)
   std::map<std::string, double> interior;   // the same without its end cells (SceneFirstOrder::interior)
+  // Order one: the layer against the first-order answer u₁ (the same distances, u₁ the reference), and
+  // against u₁ without its end cells.
+  std::map<std::string, double> order1, order1_interior;
   double layer_time_s = 0, limit_time_s = 0, estimate_time_s = 0;
 };
 
