@@ -67,8 +67,8 @@ std::string outcome_numbers(const SceneOutcome& o) {
     s << "residual " << sci(o.residual, 1) << ", floor " << sci(o.floor, 1) << ", " << o.iterations << " steps, ";
   s << o.detail;
   if (!std::isnan(o.film_slip_over_h)) s << ", film_slip_over_h " << sci(o.film_slip_over_h, 2);
-  char t[32];
-  std::snprintf(t, sizeof t, ", %.1f s", o.seconds);
+  char t[64];
+  std::snprintf(t, sizeof t, ", %.1f s (%.1f s CPU)", o.seconds, o.cpu_seconds);
   s << t;
   if (!o.solver.empty()) s << " (" << o.solver << ")";
   return s.str();
@@ -155,18 +155,19 @@ void print_refinement(const RefinementResult& result, const RefinementStudyOptio
   }
 
   std::vector<ListedScene> all = every_scene(result);
-  double total = 0;
+  double total = 0, cpu = 0;
   int solved = 0;
   for (const ListedScene& s : all)
-    if (s.outcome->state != "not solved") total += s.outcome->seconds, ++solved;
+    if (s.outcome->state != "not solved") total += s.outcome->seconds, cpu += s.outcome->cpu_seconds, ++solved;
   std::sort(all.begin(), all.end(), [](const ListedScene& a, const ListedScene& b) { return a.outcome->seconds > b.outcome->seconds; });
   std::printf("\nThe verdicts, the floor and the scenes without an answer in Markdown (studies/convergence_rates.md):\n\n%s",
               refinement_markdown(result, options).c_str());
-  std::printf("\nScenes: %zu, %d of them solved (%d in this run, the rest read from the store), %.0f s of solving in all;\n"
-              "the ten slowest:\n",
-              all.size(), solved, result.solved_now, total);
+  std::printf("\nScenes: %zu, %d of them solved (%d in this run, the rest read from the store), %.0f s of solving in all\n"
+              "(%.0f s of CPU); the ten slowest:\n",
+              all.size(), solved, result.solved_now, total, cpu);
   for (std::size_t i = 0; i < std::min<std::size_t>(10, all.size()) && all[i].outcome->seconds > 0; ++i)
-    std::printf("  %8.1f s  (%c) %-5s %-5s %-9s %-5s %s\n", all[i].outcome->seconds, all[i].law_case, all[i].mesh.c_str(),
+    std::printf("  %8.1f s (%7.1f s CPU)  (%c) %-5s %-5s %-9s %-5s %s\n", all[i].outcome->seconds, all[i].outcome->cpu_seconds,
+                all[i].law_case, all[i].mesh.c_str(),
                 all[i].mode.c_str(), all[i].mode == "layer" ? sci(all[i].eps, 2).c_str() : "", all[i].selection.c_str(),
                 all[i].outcome->state.c_str());
 }
@@ -206,6 +207,7 @@ void write_refinement(H5Writer& out, const RefinementResult& result, const Refin
     scenes.add("method", o.method);
     scenes.add("scene", o.id);
     scenes.add("wall_time_s", o.seconds);
+    scenes.add("cpu_time_s", o.cpu_seconds);
     scenes.add("residual", o.residual);
     scenes.add("residual_floor", o.floor);
     scenes.add("iterations", o.iterations);

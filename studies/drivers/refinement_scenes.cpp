@@ -139,7 +139,7 @@ std::string RefinementScenes::solve_one(const RefinementScene& s, int& done, int
   if (run.ending == CappedRun::Ending::Interrupted)  // stopped from outside: nothing to keep, the run ends
     throw std::runtime_error(mesh_name(s.level) + " " + s.def.label() + ": " + run.message);
   StoredScene stored{s.def.definition(mesh), solver_identity(SolverKind::Fast), to_string(run.ending),
-                     run.message, "", run.seconds, run.answer};
+                     run.message, "", run.seconds, run.cpu_seconds, run.answer};
   std::optional<DovetailScene> scene = decode(stored);
   if (scene) stored.stop = to_string(scene->report.stop_cause);
   store_.write(s.name, stored);
@@ -150,8 +150,8 @@ std::string RefinementScenes::solve_one(const RefinementScene& s, int& done, int
             (o.state == "not converged" ? ", " + o.detail : "") + ")";
   else
     line += " (" + o.detail + ")";
-  char seconds[32];
-  std::snprintf(seconds, sizeof seconds, " in %.1f s", o.seconds);
+  char seconds[64];
+  std::snprintf(seconds, sizeof seconds, " in %.1f s (%.1f s CPU)", o.seconds, o.cpu_seconds);
   line += seconds;
   ++done;
   if (options_.verbose) {
@@ -217,6 +217,7 @@ SceneOutcome outcome_of(const StoredScene* stored, const DovetailScene* scene) {
   }
   o.solver = stored->solver;
   o.seconds = stored->seconds;
+  o.cpu_seconds = stored->cpu_seconds;
   if (!scene) {
     o.state = stored->ending;  // "capped", "threw" or "crashed"
     o.detail = stored->message;

@@ -68,6 +68,7 @@ struct SceneOutcome {
   std::string method;    // the fast solver's method ("floating-layer ladder", ...)
   std::string id;        // the scene's id under /scenes ("" without an answer)
   double seconds = 0;    // the run's wall time
+  double cpu_seconds = 0;  // the run's CPU time (on a loaded machine, what the scene itself took)
   double residual = std::numeric_limits<double>::quiet_NaN(), floor = std::numeric_limits<double>::quiet_NaN();
   double film_slip_over_h = std::numeric_limits<double>::quiet_NaN();
   int iterations = 0;

@@ -13,6 +13,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -87,10 +88,13 @@ Reading read_answer(int fd, Clock::time_point deadline, std::string& bytes) {
   }
 }
 
-int wait_for(pid_t child) {
+int wait_for(pid_t child, double& cpu_seconds) {
   int status = 0;
-  while (::waitpid(child, &status, 0) < 0)
+  rusage usage{};
+  while (::wait4(child, &status, 0, &usage) < 0)
     if (errno != EINTR) return -1;
+  cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   return status;
 }
 
@@ -163,10 +167,9 @@ CappedRun run_capped(const std::vector<std::string>& command, const std::string&
       read_answer(out[0], start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wall_limit_s)), bytes);
   if (reading != Reading::Closed) ::kill(child, SIGKILL);
   ::close(out[0]);
-  const int status = wait_for(child);
-  set_signal_child(0);
-
   CappedRun run;
+  const int status = wait_for(child, run.cpu_seconds);
+  set_signal_child(0);
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::uint64_t size = 0;
   if (bytes.size() >= header_bytes) std::memcpy(&size, bytes.data() + 1, sizeof size);

@@ -30,7 +30,9 @@ struct CappedRun {
   Ending ending = Ending::Crashed;
   std::string answer;
   std::string message;
-  double seconds = 0;  // wall clock, from the start to the worker's end
+  double seconds = 0;      // wall clock, from the start to the worker's end
+  double cpu_seconds = 0;  // the worker's CPU time (user and system, its own children included): on a
+                           // shared machine the wall clock says how loaded it was, this what the work took
 };
 
 // Runs `command` (command[0] the program's path) with `input` on its standard input, waits at most

@@ -16,7 +16,8 @@ namespace thinlayer {
 
 namespace {
 
-const std::string marker = "thinlayer-scene-store 1\n";
+const std::string marker = "thinlayer-scene-store 2\n";
+const std::string marker_name = "thinlayer-scene-store ";  // any layout's
 // The largest store file read back: a scene of the finest mesh is about 5 MB.
 constexpr std::uintmax_t max_file_bytes = 1ULL << 30;
 
@@ -51,6 +52,10 @@ std::optional<StoredScene> SceneStore::read(const std::string& name, std::string
       if (damaged) *damaged = path + ": cut short";
       return std::nullopt;
     }
+    if (bytes.compare(0, marker_name.size(), marker_name) == 0) {
+      if (damaged) *damaged = path + ": written in another layout of the store";
+      return std::nullopt;
+    }
     throw ForeignStoreFile(path + ": in the scene store and not a file thinlayer wrote there; move it away");
   }
   const std::size_t sum = sizeof(std::uint64_t);
@@ -63,7 +68,7 @@ std::optional<StoredScene> SceneStore::read(const std::string& name, std::string
   StoredScene s;
   try {
     ByteReader r(body);
-    get(r, s.definition), get(r, s.solver), get(r, s.ending), get(r, s.message), get(r, s.stop), get(r, s.seconds), get(r, s.scene);
+    get(r, s.definition), get(r, s.solver), get(r, s.ending), get(r, s.message), get(r, s.stop), get(r, s.seconds), get(r, s.cpu_seconds), get(r, s.scene);
     if (!r.done()) throw std::runtime_error("bytes left over");
   } catch (const std::exception& e) {
     if (damaged) *damaged = path + ": unreadable (" + e.what() + ")";
@@ -79,7 +84,7 @@ void SceneStore::write(const std::string& name, const StoredScene& s) const {
   if (!std::filesystem::is_directory(folder_))
     throw OutputError(folder_ + ": cannot make the scene store's folder" + (error ? " (" + error.message() + ")" : ""));
   ByteWriter w;
-  put(w, s.definition), put(w, s.solver), put(w, s.ending), put(w, s.message), put(w, s.stop), put(w, s.seconds), put(w, s.scene);
+  put(w, s.definition), put(w, s.solver), put(w, s.ending), put(w, s.message), put(w, s.stop), put(w, s.seconds), put(w, s.cpu_seconds), put(w, s.scene);
   std::string bytes = marker + w.take();
   bytes += checksum_bytes(bytes);
   write_text_atomically(path, bytes);

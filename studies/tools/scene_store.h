@@ -10,7 +10,7 @@
 //   past its wall-time cap or crashed is stored too, so that a restart does not run it again
 //   unless asked), a one-line message, the solve's stop cause, the run's wall time, and the scene itself as bytes
 //   (core/io/bytes.h: read back bit for bit).
-// Layout: the marker line "thinlayer-scene-store 1\n", those fields as bytes, and an FNV-1a
+// Layout: the marker line "thinlayer-scene-store 2\n", those fields as bytes, and an FNV-1a
 // checksum of everything before it. An existing file is parsed with bounds-checked reads only
 // (it is an existing output: SPEC §4, never parsed where a crash would take the run down).
 #include <optional>
@@ -26,6 +26,7 @@ struct StoredScene {
   std::string message;     // why it did not answer; empty if it did
   std::string stop;        // "answered": the solve's stop cause ("converged", "round-off floor", "iteration cap", ...)
   double seconds = 0;      // wall time of its run
+  double cpu_seconds = 0;  // CPU time of its run
   std::string scene;       // "answered": the scene's bytes; else empty
 };
 
@@ -44,8 +45,8 @@ class SceneStore {
   std::string path_of(const std::string& name) const;
 
   // The stored scene, or nothing when there is no such file or it is damaged (a thinlayer file
-  // cut short or altered: its checksum fails; `damaged` then says so, and the scene is solved
-  // again and the file replaced). Throws ForeignStoreFile for a file that is not a store file
+  // cut short or altered: its checksum fails; or written in another layout of the store) —
+  // `damaged` then says so, and the scene is solved again and the file replaced. Throws ForeignStoreFile for a file that is not a store file
   // (or not a regular file).
   std::optional<StoredScene> read(const std::string& name, std::string* damaged = nullptr) const;
 
