@@ -326,8 +326,9 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
   group(c.add_option("--resolve", a.resolve,
                      "with --refine: which stored scenes are solved again: stale (default: those\n"
                      "of another solver revision), failed (every scene without an answer, whichever\n"
-                     "solver; answers of any solver kept), all")
-            ->type_name("WHAT")->check(one_of("resolve", {"stale", "failed", "all"})));
+                     "solver; answers of any solver kept), all, or none (the tables of what is\n"
+                     "stored: a copy of a store under way)")
+            ->type_name("WHAT")->check(one_of("resolve", {"stale", "failed", "all", "none"})));
   group(c.add_option("--tolerance", a.tolerance,
                      "S2/S3: the SPEC residual the scenes are solved to (default 1e-10; below\n"
                      "it, case d is re-solved at 1e-10 to show how much the distances move)")

@@ -67,7 +67,8 @@ ResolvePolicy parse_resolve_policy(const std::string& name) {
   if (name == "stale") return ResolvePolicy::Stale;
   if (name == "failed") return ResolvePolicy::Failed;
   if (name == "all") return ResolvePolicy::All;
-  throw std::invalid_argument("--resolve: '" + name + "' is not one of stale, failed, all");
+  if (name == "none") return ResolvePolicy::None;
+  throw std::invalid_argument("--resolve: '" + name + "' is not one of stale, failed, all, none");
 }
 
 RefinementScenes::RefinementScenes(const RefinementSceneOptions& options)
@@ -119,6 +120,7 @@ bool RefinementScenes::needs_solving(const RefinementScene& s) const {
   std::string damaged;
   const std::optional<StoredScene> stored = store_.read(s.name, &damaged);  // refuses a file that is not the store's
   if (!damaged.empty() && options_.verbose) std::fprintf(stderr, "[refine] %s: solved again\n", damaged.c_str());
+  if (options_.resolve == ResolvePolicy::None) return false;
   if (options_.resolve == ResolvePolicy::All || !stored || stored->definition != s.def.definition(mesh_options(s.level))) return true;
   try {
     decode(*stored);  // a scene this binary cannot read back (its layout changed) is solved again

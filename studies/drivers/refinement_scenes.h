@@ -15,7 +15,8 @@
 //           whichever revision solved it (its SPEC residual is the true one, which no solver's choice
 //           enters); every other is solved: after a faster solver lands, this re-runs only what did
 //           not converge; after a larger --scene-cap, only what ran past the old one;
-//   all     every scene is solved.
+//   all     every scene is solved;
+//   none    no scene is solved: the tables of the scenes stored so far (a copy of a store under way).
 #include <limits>
 #include <memory>
 #include <optional>
@@ -35,8 +36,8 @@ struct StoreRefused : ErrorOnEveryRank {
   using ErrorOnEveryRank::ErrorOnEveryRank;
 };
 
-enum class ResolvePolicy { Stale, Failed, All };
-ResolvePolicy parse_resolve_policy(const std::string& name);  // "stale" | "failed" | "all", else throws
+enum class ResolvePolicy { Stale, Failed, All, None };
+ResolvePolicy parse_resolve_policy(const std::string& name);  // "stale" | "failed" | "all" | "none", else throws
 
 struct RefinementSceneOptions {
   std::string cases = "abcdefghi";
