@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# `study convergence --refine` on a subset small enough for CI (one case, two thicknesses, h and h/2:
+# `study convergence --refine` on a subset small enough for CI (case h — a case letter that is also a
+# mesh name, a group beside the dataset h_along_S —, two thicknesses, h and h/2:
 # 10 scenes), through the code path of the full study:
 #   1. a first run (over 2 MPI ranks when MPIRUN is given) solves every scene, keeps each in DIR/scenes,
 #      writes results.h5 and the report, and fails its checks (exit 1: two thicknesses give one Cauchy
@@ -12,7 +13,7 @@ set -euo pipefail
 thinlayer=$1 python=$2 compare=$3 mpirun=${4:-}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-study=(study convergence --cases i --rate-eps 1e-6,3.16227766e-7 --refine 1,2)
+study=(study convergence --cases h --rate-eps 1e-6,3.16227766e-7 --refine 1,2)
 
 expect_status() {  # expected actual what
   if [ "$1" != "$2" ]; then
@@ -32,7 +33,7 @@ fi
 expect_status 1 "$status" "first run"
 [ "$(solved_count)" = 10 ] || { echo "first run: $(solved_count) scenes to solve, expected 10"; exit 1; }
 [ "$(ls "$dir/one/scenes" | grep -c '\.scene$')" = 10 ] || { echo "first run: the store does not hold 10 scenes"; exit 1; }
-grep -q "(i) u_away .*h/4 not run: not established: " "$dir/out.txt" || { echo "first run: no verdict line for u_away"; exit 1; }
+grep -q "(h) u_away .*h/4 not run: not established: " "$dir/out.txt" || { echo "first run: no verdict line for u_away"; exit 1; }
 [ -f "$dir/one/report/index.html" ] || { echo "first run: no report"; exit 1; }
 
 mkdir "$dir/two"
@@ -43,20 +44,20 @@ expect_status 1 "$status" "second run"
 [ "$(solved_count)" = 0 ] || { echo "second run: $(solved_count) scenes solved again, expected 0"; exit 1; }
 "$python" "$compare" "$dir/one/results.h5" "$dir/two/results.h5"
 
-rm "$dir/two/scenes/h0.025-i-limit.scene"
-printf 'x' >>"$dir/two/scenes/h0.025-i-layer-eps1e-06-plus.scene"
+rm "$dir/two/scenes/h0.025-h-limit.scene"
+printf 'x' >>"$dir/two/scenes/h0.025-h-layer-eps1e-06-plus.scene"
 status=0
 "$thinlayer" "${study[@]}" --out "$dir/two" >"$dir/out.txt" 2>"$dir/err.txt" || status=$?
 expect_status 1 "$status" "third run"
 [ "$(solved_count)" = 2 ] || { echo "third run: $(solved_count) scenes solved again, expected 2"; exit 1; }
-grep -q "h0.025-i-layer-eps1e-06-plus.scene: its checksum does not match" "$dir/err.txt" ||
+grep -q "h0.025-h-layer-eps1e-06-plus.scene: its checksum does not match" "$dir/err.txt" ||
   { echo "third run: the altered scene file is not named"; exit 1; }
 "$python" "$compare" "$dir/one/results.h5" "$dir/two/results.h5"
 
-echo "my notes" >"$dir/two/scenes/h0.025-i-limit.scene"
+echo "my notes" >"$dir/two/scenes/h0.025-h-limit.scene"
 status=0
 "$thinlayer" "${study[@]}" --out "$dir/two" >"$dir/out.txt" 2>"$dir/err.txt" || status=$?
 expect_status 2 "$status" "a foreign file in the store"
-[ "$(cat "$dir/two/scenes/h0.025-i-limit.scene")" = "my notes" ] || { echo "the foreign file was touched"; exit 1; }
+[ "$(cat "$dir/two/scenes/h0.025-h-limit.scene")" = "my notes" ] || { echo "the foreign file was touched"; exit 1; }
 [ "$(wc -l <"$dir/err.txt")" = 1 ] || { echo "a foreign file in the store: not one line:"; cat "$dir/err.txt"; exit 1; }
 echo "refinement study: first run, resume, damaged and foreign store files as expected"

@@ -178,7 +178,7 @@ void write_refinement(H5Writer& out, const RefinementResult& result, const Refin
   out.dataset(g + "/meshes", result.meshes);
   std::vector<double> h;
   for (const RefinedLevel& L : result.cases.front().levels) h.push_back(L.h);
-  out.described_dataset(g + "/h", h, "L", "the spacing along S of each mesh");
+  out.described_dataset(g + "/h_along_S", h, "L", "the spacing along S of each mesh (a group per case letter sits beside: not \"h\")");
   out.attr(g, "tolerance", options.scenes.tolerance);
   out.attr(g, "scene_cap_s", options.scenes.scene_cap_s);
   out.attr(g, "scene_cap_s_units", std::string("s"));
