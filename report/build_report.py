@@ -41,6 +41,7 @@ import section_film  # noqa: E402
 import section_header  # noqa: E402
 import section_joint  # noqa: E402
 import section_layer_stiffness  # noqa: E402
+import section_refinement  # noqa: E402
 import section_scene_files  # noqa: E402
 import section_table3  # noqa: E402
 import section_tables12  # noqa: E402
@@ -52,7 +53,7 @@ from checks import load_checks  # noqa: E402
 from context import Context  # noqa: E402
 from html_parts import page, section  # noqa: E402
 from plotting import FigureWriter  # noqa: E402
-from report_folder import JOINT_TITLE, MAP_TITLE, TITLE, FolderError, check_folder  # noqa: E402
+from report_folder import JOINT_TITLE, MAP_TITLE, REFINEMENT_TITLE, TITLE, FolderError, check_folder  # noqa: E402
 from results_file import ReportError, open_results  # noqa: E402
 from scenes import index_scenes  # noqa: E402
 
@@ -112,6 +113,19 @@ def is_map_file(f):
     return studies is not None and set(studies.keys()) == {"validity_map"}
 
 
+# A file whose only study is S2 under mesh refinement (`study convergence --refine`) gets its own report.
+REFINEMENT_SECTIONS = (
+    ("summary", "Summary", section_header.render),
+    ("refinement", "Rates under refinement", section_refinement.render),
+)
+
+
+def is_refinement_file(f):
+    studies = f.get("studies")
+    return (studies is not None and set(studies.keys()) == {"convergence"}
+            and set(studies["convergence"].keys()) == {"refinement"})
+
+
 class SectionError(Exception):
     """A section could not be built from the file (a malformed or incomplete group)."""
 
@@ -131,7 +145,9 @@ def write_report(f, results_path, out_dir):
                                 figures=FigureWriter(out_dir)))
     joint = is_joint_file(f)
     mapped = is_map_file(f)
-    sections = JOINT_SECTIONS if joint else MAP_SECTIONS if mapped else SECTIONS
+    refined = is_refinement_file(f)
+    sections = (JOINT_SECTIONS if joint else MAP_SECTIONS if mapped else REFINEMENT_SECTIONS if refined
+                else SECTIONS)
     helper, answer = parallel_sections.start(
         results_path, out_dir, [(label, render) for anchor, label, render in sections if anchor in IN_HELPER])
     try:
@@ -150,7 +166,9 @@ def write_report(f, results_path, out_dir):
             parts.append(html)
             nav.append((anchor, label))
     title = (f"{JOINT_TITLE}: {', '.join(sorted(f['studies']['scene']))}" if joint else
-             f"{MAP_TITLE}: {', '.join(sorted(f['studies']['validity_map']))}" if mapped else TITLE)
+             f"{MAP_TITLE}: {', '.join(sorted(f['studies']['validity_map']))}" if mapped else
+             f"{REFINEMENT_TITLE}: {', '.join(section_refinement.refined_cases(f['studies']['convergence']['refinement']))}"
+             if refined else TITLE)
     html = page(title, nav, "\n".join(parts))
     with open(os.path.join(out_dir, "index.html"), "w", encoding="utf-8") as out:
         out.write(html)

@@ -13,6 +13,7 @@ import re
 TITLE = "thinlayer verification report"
 JOINT_TITLE = "thinlayer joint report"
 MAP_TITLE = "thinlayer validity map"
+REFINEMENT_TITLE = "thinlayer rates under refinement"
 
 
 class FolderError(Exception):
@@ -31,7 +32,7 @@ def previous_figures(index_path):
     except (OSError, UnicodeDecodeError) as e:
         raise FolderError(f"{index_path}: exists and is not a report this script wrote ({e}); "
                           f"move it or choose another folder") from None
-    if f"<title>{TITLE}</title>" not in html and not re.search(f"<title>({JOINT_TITLE}|{MAP_TITLE}): [^<]*</title>", html):
+    if f"<title>{TITLE}</title>" not in html and not re.search(f"<title>({JOINT_TITLE}|{MAP_TITLE}|{REFINEMENT_TITLE}): [^<]*</title>", html):
         raise FolderError(f"{index_path}: exists and is not a report this script wrote; "
                           f"move it or choose another folder")
     return set(re.findall(r'<img src="figures/([^"/]+\.png)"', html))

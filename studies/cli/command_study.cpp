@@ -30,6 +30,7 @@
 #include "studies/cli/report_runner.h"
 #include "studies/cli/results_file.h"
 #include "studies/drivers/quadrature_control.h"
+#include "studies/drivers/refinement_study.h"
 #include "studies/drivers/selection_control.h"
 #include "studies/drivers/skip_study.h"
 #include "studies/parallel/spread_command.h"
@@ -54,6 +55,8 @@ struct StudyInput {
   CauchyStudyOptions rates;
   FloorStudyOptions floor;
   bool floor_study = true;  // --quick skips it (three mesh levels, the finest the slowest scenes of S2)
+  RefinementStudyOptions refinement;
+  bool refine = false;  // study convergence --refine: S2 under mesh refinement, alone
   ValidityStudyOptions validity;
   ThresholdsStudyOptions thresholds;
   TimingStudyOptions timing;
@@ -66,7 +69,8 @@ struct StudyInput {
 const std::map<std::string, std::set<std::string>> study_options = {
     {"table3", {"out", "quiet", "force", "repeats", "quick"}},
     {"dovetail", {"out", "quiet", "force", "cases", "eps", "relaxation-cap", "friction-path"}},
-    {"convergence", {"out", "quiet", "force", "quick", "cases", "eps", "rate-eps", "tolerance", "threads"}},
+    {"convergence", {"out", "quiet", "force", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "refine",
+                     "scene-cap", "resolve"}},
     {"validity", {"out", "quiet", "force", "cases", "eps", "tolerance", "threads", "bisection-steps"}},
     {"thresholds", {"out", "quiet", "force"}},
     {"asymptotics", {"out", "quiet", "force", "quick", "cases", "eps", "rate-eps", "tolerance", "threads", "bisection-steps"}},
@@ -79,6 +83,41 @@ const std::map<std::string, std::set<std::string>> study_options = {
 // The dovetail's thickest thin layer (its layer meshes stop there; SPEC §4: a layer thicker
 // than makes geometric sense is refused).
 constexpr double thickest_dovetail_layer = 0.1;
+
+// study convergence --refine LIST [--scene-cap S] [--resolve stale|failed|all]: S2 under mesh
+// refinement (studies/drivers/refinement_study.h), on the cases and rate grid of --cases, --rate-eps.
+void parse_refinement(const CLI::App& c, const StudyArgs& a, StudyInput& in) {
+  in.refine = given(c, "refine");
+  if (!in.refine) {
+    for (const char* option : {"scene-cap", "resolve"})
+      if (given(c, option)) throw std::invalid_argument(std::string("--") + option + " applies only with --refine");
+    return;
+  }
+  for (const char* option : {"eps", "quick", "threads"})
+    if (given(c, option))
+      throw std::invalid_argument(std::string("--") + option + " does not apply with --refine (it solves the rate grid, "
+                                  "one scene at a time per rank: spread it with mpirun)");
+  if (in.out_dir.empty()) throw std::invalid_argument("--refine needs --out DIR: its scenes are kept in DIR/scenes as they are solved");
+  RefinementSceneOptions& s = in.refinement.scenes;
+  s.refine.clear();
+  for (double r : a.refine.values) {
+    if (!(r >= 1 && r <= 16) || r != std::floor(r))
+      throw std::invalid_argument("--refine: each refinement is a whole number from 1 to 16 (h / r along S), not " + plain(r));
+    if (!s.refine.empty() && !(r > s.refine.back())) throw std::invalid_argument("--refine: the refinements must increase");
+    s.refine.push_back(static_cast<int>(r));
+  }
+  if (s.refine.empty()) throw std::invalid_argument("--refine: give at least one refinement");
+  s.cases = in.dovetail.cases;
+  s.eps = in.rates.eps;
+  s.tolerance = in.convergence.tolerance;
+  s.verbose = in.verbose;
+  s.store_folder = in.out_dir + "/scenes";
+  if (given(c, "scene-cap")) {
+    if (!(a.scene_cap > 0) || a.scene_cap > 7 * 86400) throw std::invalid_argument("--scene-cap: seconds in (0, 604800]");
+    s.scene_cap_s = a.scene_cap;
+  }
+  if (given(c, "resolve")) s.resolve = parse_resolve_policy(a.resolve);
+}
 
 StudyInput parse(const CLI::App& c, const StudyArgs& a, const std::string& name) {
   require_only(c, study_options.at(name), name == "verify" ? "verify" : "study " + name);
@@ -137,6 +176,7 @@ StudyInput parse(const CLI::App& c, const StudyArgs& a, const std::string& name)
   if (in.threads < 1 || in.threads > 64) throw std::invalid_argument("--threads must be in 1..64");
   in.floor.threads = in.threads;
   in.floor.verbose = in.verbose;
+  parse_refinement(c, a, in);
   in.validity.bisection_steps = given(c, "bisection-steps") ? a.bisection_steps : 2;
   if (in.validity.bisection_steps < 0 || in.validity.bisection_steps > 20)
     throw std::invalid_argument("--bisection-steps must be in 0..20");
@@ -272,6 +312,23 @@ void declare_study_options(CLI::App& c, StudyArgs& a, const std::set<std::string
                      "S2: the decreasing eps grid of the Cauchy differences (default\n"
                      "1e-4 ... 1e-8, ratio 10^-1/2); the rate is fitted on eps <= 1e-4")
             ->type_name("LIST")->check(number_list("rate-eps")));
+  group(c.add_option("--refine", a.refine,
+                     "convergence: S2 under mesh refinement alone: the rate grid (--rate-eps) of\n"
+                     "every case (--cases) at h / r along S for each r of the list (1,2,4: h, h/2,\n"
+                     "h/4; SPEC 3 S2 item 3), both selections of the layer; resumable: each scene\n"
+                     "is kept in DIR/scenes as it is solved (--out required). Hours: spread it with\n"
+                     "mpirun (docs/studies.md, \"S2 under mesh refinement\")")
+            ->type_name("R1,R2,...")->check(number_list("refine")));
+  group(c.add_option("--scene-cap", a.scene_cap,
+                     "with --refine: each scene's wall-time cap in seconds (default 900); a scene\n"
+                     "past it is stopped, recorded as capped and never fitted")
+            ->type_name("S")->check(decimal("scene-cap")));
+  group(c.add_option("--resolve", a.resolve,
+                     "with --refine: which stored scenes are solved again: stale (default: those\n"
+                     "of another solver revision), failed (every scene without an answer, whichever\n"
+                     "solver; answers of any solver kept), all, or none (the tables of what is\n"
+                     "stored: a copy of a store under way)")
+            ->type_name("WHAT")->check(one_of("resolve", {"stale", "failed", "all", "none"})));
   group(c.add_option("--tolerance", a.tolerance,
                      "S2/S3: the SPEC residual the scenes are solved to (default 1e-10; below\n"
                      "it, case d is re-solved at 1e-10 to show how much the distances move)")
@@ -421,6 +478,7 @@ int command_study(const CLI::App& command, const StudyArgs& a) {
       checks = on_root_alone("timing", "it measures time, so it is never spread",
                              [&] { return run_timing_studies(in.timing, out.get()); });
     else if (name == "stress") checks = run_stress_study(in.stress, out.get());
+    else if (name == "convergence" && in.refine) checks = run_refinement_study(in.refinement, out.get()).checks;
     else
       checks = run_asymptotic_studies(in, name == "convergence" || name == "validity" || name == "asymptotics",
                                       name == "validity" || name == "asymptotics",
@@ -432,6 +490,11 @@ int command_study(const CLI::App& command, const StudyArgs& a) {
       write_checks(*out, checks);
       out->commit();
       std::printf("wrote %s\n", out->path().c_str());
+      if (in.refine) {  // its own report: the rates under refinement (report/section_refinement.py)
+        std::fflush(stdout);
+        run_report(out->path(), in.out_dir + "/report");
+        std::printf("wrote %s/report/index.html\n", in.out_dir.c_str());
+      }
     });
     return command_status(report_checks(checks));
   } catch (const std::exception& e) {

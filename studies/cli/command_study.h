@@ -13,6 +13,9 @@ struct StudyArgs {
   std::string name, out, cases, scene;
   NumberList eps, rate_eps, friction_path;
   NumberList thickness_ratios, modulus_ratios, poisson;  // the validity map's grid
+  NumberList refine;          // study convergence --refine: the mesh refinements r (h / r along S)
+  double scene_cap = 0;       // --refine: each scene's wall-time cap, s
+  std::string resolve;        // --refine: which stored scenes are solved again
   double tolerance = 0, mesh_timeout = 0;
   double peak_distance = 0;  // scene studies: d of the peaks judged at a distance from the bondline ends (mm)
   int repeats = 0, relaxation_cap = 0, threads = 0, bisection_steps = 0;

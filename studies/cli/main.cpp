@@ -15,6 +15,7 @@
 #include "studies/cli/command_study.h"
 #include "studies/cli/environment.h"
 #include "studies/cli/results_file.h"
+#include "studies/drivers/refinement_scenes.h"
 #include "studies/parallel/process_group.h"
 
 namespace {
@@ -76,6 +77,8 @@ int main(int argc, char** argv) {
   thinlayer::install_signal_cleanup();
   thinlayer::ProcessGroup processes(argc, argv);  // MPI under mpirun/srun (SPEC §6)
   std::vector<std::string> args(argv + 1, argv + argc);
+  // One scene of `study convergence --refine`, in a worker process of its own (not a user's command).
+  if (args.size() == 1 && args[0] == thinlayer::scene_worker_command) return thinlayer::serve_refinement_scene();
   if (args.size() == 1 && args[0] == "--version") {
     std::printf("thinlayer %s (results layout %s version %d; source commit %s)\n", THINLAYER_VERSION,
                 thinlayer::results_layout, thinlayer::results_layout_version,

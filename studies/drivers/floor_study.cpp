@@ -41,12 +41,10 @@ FloorLevel measure_level(const FloorStudyOptions& options, double h, DovetailSce
   level.S_nodes = static_cast<int>(nodes.S.size());
   level.converged = L.report.converged && A.report.converged && B.report.converged;
   level.solve_time_s = own ? cache.solve_time_s() : 0.0;
-  const double p = predicted_rate(options.law_case), rho = options.eps.at(1) / options.eps.at(0);
-  const ModeDistance floor = mode_distance(B.record, L.record, nodes), step = mode_distance(A.record, B.record, nodes);
-  for (const auto& [q, e] : floor.e) {
-    level.floor[q] = e;
-    level.eps_part[q] = step.e.at(q) * std::pow(rho, p) / (1 - std::pow(rho, p));  // Σ of the geometric tail
-  }
+  const FloorPoint point = floor_point(A.record, B.record, L.record, nodes, predicted_rate(options.law_case),
+                                      options.eps.at(1) / options.eps.at(0));
+  level.floor = point.floor;
+  level.eps_part = point.eps_part;
   if (out && own) cache.write(*out);
   return level;
 }
@@ -100,6 +98,35 @@ void write(H5Writer& out, const FloorStudyOptions& options, const FloorResult& r
 
 }  // namespace
 
+FloorPoint floor_point(const SceneRecord& thick, const SceneRecord& thin, const SceneRecord& limit,
+                       const DovetailNodes& nodes, double p, double rho) {
+  const ModeDistance floor = mode_distance(thin, limit, nodes), step = mode_distance(thick, thin, nodes);
+  FloorPoint point;
+  for (const auto& [q, e] : floor.e) {
+    point.floor[q] = e;
+    point.eps_part[q] = step.e.at(q) * std::pow(rho, p) / (1 - std::pow(rho, p));  // Σ of the geometric tail
+  }
+  return point;
+}
+
+Check floor_check(const std::string& quantity, const std::vector<double>& floor, const std::vector<double>& eps_part,
+                  const std::vector<bool>& converged, const std::optional<PowerLawFit>& rate) {
+  bool shrinks = true, eps_part_small = true, all_converged = true;
+  std::string got;
+  for (size_t i = 0; i < floor.size(); ++i) {
+    if (i > 0) shrinks = shrinks && floor[i] < floor[i - 1];
+    eps_part_small = eps_part_small && eps_part[i] <= 0.1 * floor[i];
+    all_converged = all_converged && converged[i];
+    got += (got.empty() ? "" : ", ") + sci(floor[i], 2);
+  }
+  got += "; rate in h " + rate_text(rate);
+  if (!eps_part_small) got += "; eps-part not below a tenth of the floor";
+  if (!all_converged) got += "; a scene did not converge";
+  return {"", shrinks && eps_part_small && all_converged,
+          "floor of " + quantity + " shrinking at every halving of h, its eps-part below a tenth of it", got,
+          "strictly decreasing"};
+}
+
 FloorResult run_floor_study(const FloorStudyOptions& options, DovetailSceneCache& shared, H5Writer* out,
                             std::vector<Check>& checks) {
   if (options.eps.size() != 2 || !(options.eps[1] < options.eps[0]))
@@ -118,21 +145,15 @@ FloorResult run_floor_study(const FloorStudyOptions& options, DovetailSceneCache
   print(options, r, quantities);
 
   for (const std::string& q : options.checked) {
-    bool shrinks = true, eps_part_small = true, converged = true;
-    std::string got;
-    for (size_t i = 0; i < r.levels.size(); ++i) {
-      const FloorLevel& l = r.levels[i];
-      if (i > 0) shrinks = shrinks && l.floor.at(q) < r.levels[i - 1].floor.at(q);
-      eps_part_small = eps_part_small && l.eps_part.at(q) <= 0.1 * l.floor.at(q);
-      converged = converged && l.converged;
-      got += (got.empty() ? "" : ", ") + sci(l.floor.at(q), 2);
+    std::vector<double> floor, eps_part;
+    std::vector<bool> converged;
+    for (const FloorLevel& l : r.levels) {
+      floor.push_back(l.floor.at(q));
+      eps_part.push_back(l.eps_part.at(q));
+      converged.push_back(l.converged);
     }
-    got += "; rate in h " + rate_text(r.rate.at(q));
-    if (!eps_part_small) got += "; eps-part not below a tenth of the floor";
-    if (!converged) got += "; a scene did not converge";
-    checks.push_back({"convergence.floor." + q, shrinks && eps_part_small && converged,
-                      "floor of " + q + " shrinking at every halving of h, its eps-part below a tenth of it", got,
-                      "strictly decreasing"});
+    const Check verdict = floor_check(q, floor, eps_part, converged, r.rate.at(q));
+    checks.push_back({"convergence.floor." + q, verdict.pass, verdict.expected, verdict.got, verdict.tolerance});
   }
   if (out) write(*out, options, r);
   return r;

@@ -17,6 +17,7 @@
 #include "core/io/h5_writer.h"
 #include "studies/drivers/table3_study.h"
 #include "studies/tools/cauchy_rate.h"
+#include "studies/tools/mode_distance.h"
 #include "studies/tools/rate_fit.h"
 #include "studies/tools/scene_cache.h"
 
@@ -50,6 +51,21 @@ struct FloorResult {
   std::vector<FloorLevel> levels;
   std::map<std::string, std::optional<PowerLawFit>> rate;  // floor ≈ C h^q, per quantity
 };
+
+// The floor on one mesh from three of its scenes: the layer at `thin` against the limit law, and the
+// bound on the ε-part left in it, its Cauchy difference to `thick` times ρ^p/(1 − ρ^p) (the geometric
+// tail summed; ρ = ε_thin/ε_thick, p the case's predicted rate). Per quantity of mode_distance.h.
+struct FloorPoint {
+  std::map<std::string, double> floor, eps_part;
+};
+FloorPoint floor_point(const SceneRecord& thick, const SceneRecord& thin, const SceneRecord& limit,
+                       const DovetailNodes& nodes, double p, double rho);
+
+// The floor's check on one quantity over the mesh levels (coarsest first): it shrinks at every
+// halving of h, its ε-part stays below a tenth of it, and every level's scenes converged. The
+// Check's id is left to the caller.
+Check floor_check(const std::string& quantity, const std::vector<double>& floor, const std::vector<double>& eps_part,
+                  const std::vector<bool>& converged, const std::optional<PowerLawFit>& rate);
 
 // `shared` is the studies' cache: the level on its mesh is solved there (and written with it).
 FloorResult run_floor_study(const FloorStudyOptions& options, DovetailSceneCache& shared, H5Writer* out,

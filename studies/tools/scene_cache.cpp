@@ -48,15 +48,15 @@ const DovetailScene* DovetailSceneCache::find(const DovetailSceneDef& def) {
   return it->second.second.get();
 }
 
-DovetailScene DovetailSceneCache::compute(const DovetailSceneDef& def) {
+DovetailScene solve_dovetail_scene(DovetailLimitBulk& bulk, const DovetailSceneDef& def) {
   if (def.mode != "limit" && def.mode != "layer") throw std::invalid_argument("scene mode must be limit or layer");
   SolverOptions options;
   options.tolerance = def.tolerance;
   options.layer_selection = def.selection;
   const dovetail::Exponents e = dovetail::exponents_of(def.law_case.at(0));
   DovetailScene s = def.mode == "limit"
-                        ? solve_dovetail_limit(bulk_, e, def.law_case, SolverKind::Fast, options)
-                        : solve_dovetail_layer(bulk_, e, def.eps, def.law_case, SolverKind::Fast, options,
+                        ? solve_dovetail_limit(bulk, e, def.law_case, SolverKind::Fast, options)
+                        : solve_dovetail_layer(bulk, e, def.eps, def.law_case, SolverKind::Fast, options,
                                                default_status_tolerance, def.quadrature);
   if (def.mode == "layer" && def.selection == LayerSelection::PlusFace) s.record.id += "-plus";
   if (def.tolerance != SolverOptions{}.tolerance) {
@@ -67,22 +67,22 @@ DovetailScene DovetailSceneCache::compute(const DovetailSceneDef& def) {
   return s;
 }
 
+std::string DovetailSceneDef::label() const {
+  std::ostringstream s;
+  s << "case " << law_case << " " << mode;
+  if (mode == "layer") s << " eps " << eps;
+  if (quadrature == LayerQuadrature::Selective) s << " selective";
+  if (quadrature == LayerQuadrature::Full) s << " full";
+  if (selection == LayerSelection::PlusFace) s << " plus-face selection";
+  if (tolerance != SolverOptions{}.tolerance) s << " tol " << tolerance;
+  return s.str();
+}
+
 namespace {
 
 // What a scene costs, relative to a limit-mode one (measured: a layer scene of the dovetail takes
 // about 100 times as long; docs/studies.md, "Studies over MPI ranks").
 double scene_cost(const DovetailSceneDef& d) { return d.mode == "limit" ? 1.0 : 100.0; }
-
-std::string scene_label(const DovetailSceneDef& d) {
-  std::ostringstream s;
-  s << "case " << d.law_case << " " << d.mode;
-  if (d.mode == "layer") s << " eps " << d.eps;
-  if (d.quadrature == LayerQuadrature::Selective) s << " selective";
-  if (d.quadrature == LayerQuadrature::Full) s << " full";
-  if (d.selection == LayerSelection::PlusFace) s << " plus-face selection";
-  if (d.tolerance != SolverOptions{}.tolerance) s << " tol " << d.tolerance;
-  return s.str();
-}
 
 }  // namespace
 
@@ -104,7 +104,8 @@ void DovetailSceneCache::solve(const std::vector<DovetailSceneDef>& defs) {
   for (SceneBatch* batch : {&limit, &layer}) {
     for (size_t i = 0; i < todo.size(); ++i)
       if ((todo[i].mode == "limit") == (batch == &limit))
-        batch->add(scene_label(todo[i]), scene_cost(todo[i]), solved[i], [this, d = todo[i]] { return compute(d); });
+        batch->add(todo[i].label(), scene_cost(todo[i]), solved[i],
+                   [this, d = todo[i]] { return solve_dovetail_scene(bulk_, d); });
     batch->run();
     for (size_t k = 0; k < batch->size(); ++k) solve_time_s_ += batch->seconds(k);
   }

@@ -27,7 +27,13 @@ struct DovetailSceneDef {
   LayerSelection selection = LayerSelection::MinusFace;
   // Every field that changes the result, with the mesh's options, as canonical text.
   std::string definition(const dovetail::MeshOptions& mesh) const;
+  // For progress lines: "case d layer eps 1e-06 plus-face selection".
+  std::string label() const;
 };
+
+// Solves one scene on `bulk` with the fast solver (its id says when it departs from the defaults:
+// "-plus", "-tol<T>"). A limit scene uses the bulk's condensation, built on first use.
+DovetailScene solve_dovetail_scene(DovetailLimitBulk& bulk, const DovetailSceneDef& def);
 
 // FNV-1a, 64 bits: stable across runs and platforms (std::hash is not).
 std::uint64_t definition_hash(const std::string& definition);
@@ -51,7 +57,6 @@ class DovetailSceneCache {
   void write(H5Writer& out) const;
 
  private:
-  DovetailScene compute(const DovetailSceneDef& def);
   const DovetailScene* find(const DovetailSceneDef& def);
 
   DovetailLimitBulk& bulk_;
