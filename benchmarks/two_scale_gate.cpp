@@ -30,6 +30,8 @@
 #include "core/solvers/mixed_system.h"
 #include "benchmarks/two_scale_lab/outer_newton.h"
 #include "core/solvers/solver_choice.h"
+#include "core/solvers/tnnmg.h"
+#include "core/solvers/layer_interior_point.h"
 #include "core/linalg/factor_memory.h"
 #include "studies/parallel/blas_threads.h"
 #include "studies/tools/scene_generator.h"
@@ -47,6 +49,11 @@ struct Settings {
   bool follow = false;             // springs anchored at the mean of the facing adherent nodes
   bool hold_film = false;          // the limit-open nodes' rows kept gap through the spring steps
   std::string seed = "limit";      // limit | reference
+  std::string start = "limit";     // tnnmg: limit | bonded
+  bool tresca_reference = false;   // tnnmg: run A, Tresca with the reference answer's thresholds
+  int smoothing_sweeps = 1;
+  int closing_rounds = 0;
+  bool releasing = false;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -327,6 +334,135 @@ void run_scene(const std::string& name, const ContactProblem& problem, const Int
   std::fflush(stdout);
 }
 
+// The limit answer on the layer model (issue 40's start): each adherent node as the limit answer
+// has it (same body, same node), each band column interpolated between the adherent nodes facing
+// its two ends; the thresholds f·max(0, −σ_N ℓ) of the limit's S node k on both faces' node k.
+struct LayerStart {
+  Eigen::VectorXd y, thresholds, r;
+};
+LayerStart layer_start(const Model& limit_model, const SceneRecord& limit, const Model& layer_model,
+                       const ContactProblem& layer) {
+  const LinearSystem& system = layer.system();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(layer_model.num_dofs());
+  for (size_t b = 0; b < layer_model.bodies.size(); ++b)
+    for (size_t a = 0; a < limit_model.bodies.size(); ++a)
+      if (limit_model.bodies[a].name == layer_model.bodies[b].name) {
+        const int from = limit_model.dof_offset(static_cast<int>(a)) / 2, to = layer_model.dof_offset(static_cast<int>(b));
+        for (int i = 0; i < layer_model.bodies[b].mesh.num_nodes(); ++i)
+          for (int c = 0; c < 2; ++c) u[to + 2 * i + c] = limit.u(from + i, c);
+      }
+  const FloatingBand& band = system.floating_bands().at(0);
+  const int band_offset = layer_model.dof_offset(band.body);
+  const BandLayout& L = band.layout;
+  std::vector<int> partner(L.columns * (L.across + 1), -1);  // band node -> adherent global dof
+  for (int k = 0; k < layer.num_nodes(); ++k) {
+    const InterfaceNode& n = layer.node(k);
+    for (auto [mine, other] : {std::pair{n.plus_dof_x, n.minus_dof_x}, std::pair{n.minus_dof_x, n.plus_dof_x}})
+      if (mine >= band_offset && mine < band_offset + 2 * L.columns * (L.across + 1)) partner[(mine - band_offset) / 2] = other;
+  }
+  for (int i = 0; i < L.columns; ++i) {
+    const int foot = partner[L.node(i, 0)], top = partner[L.node(i, L.across)];
+    for (int j = 0; j <= L.across; ++j)
+      for (int c = 0; c < 2; ++c) {
+        const double uf = foot >= 0 ? u[foot + c] : 0.0, ut = top >= 0 ? u[top + c] : uf;
+        u[band_offset + 2 * L.node(i, j) + c] = uf + (ut - uf) * j / L.across;
+      }
+  }
+  Eigen::VectorXd u_free(system.num_free());
+  for (int g = 0; g < layer_model.num_dofs(); ++g)
+    if (system.free_index(g) >= 0) u_free[system.free_index(g)] = u[g];
+  LayerStart out;
+  out.y = MixedSystem(layer).unknowns(u_free);
+  const InterfaceFields& S = limit.interfaces.at(0);
+  const int m = static_cast<int>(S.sigma_N.size());
+  out.thresholds = Eigen::VectorXd::Zero(layer.num_nodes());
+  out.r = Eigen::VectorXd::Zero(2 * layer.num_nodes());
+  for (int k = 0; k < layer.num_nodes(); ++k) {
+    out.thresholds[k] = layer.law(k).friction * std::max(0.0, -S.sigma_N[k % m] * layer.node(k).length);
+    out.r[2 * k] = S.sigma_N[k % m] * layer.node(k).length;
+    out.r[2 * k + 1] = S.sigma_T[k % m] * layer.node(k).length;
+  }
+  return out;
+}
+
+// Issue 40's gate: the layer descent (core/solvers/tnnmg.h) from the limit answer (run B) or, with
+// --tresca-reference, on the Tresca problem of the reference answer's thresholds (run A).
+void tnnmg_scene(const std::string& name, const ContactProblem& problem, const Model& layer_model,
+                 const Model& limit_model, const SceneRecord& limit, const Settings& s) {
+  SolverOptions solver;
+  TnnmgOptions opt;
+  opt.verbose = s.outer.verbose;
+  opt.smoothing_sweeps = s.smoothing_sweeps;
+  opt.closing_rounds = s.closing_rounds;
+  opt.releasing = s.releasing;
+  if (s.start == "limit") {
+    const LayerStart st = layer_start(limit_model, limit, layer_model, problem);
+    opt.start_y = st.y;
+    opt.start_thresholds = st.thresholds;
+  }
+  if (s.tresca_reference) {
+    SolverOptions tight;
+    tight.tolerance = 1e-12;
+    const SolveReport reference = solve_fast(problem, tight);
+    Eigen::VectorXd t = Eigen::VectorXd::Zero(problem.num_nodes());
+    for (int k = 0; k < problem.num_nodes(); ++k)
+      t[k] = problem.law(k).friction * std::max(0.0, -reference.r[2 * k]);
+    opt.tresca_thresholds = t;
+    if (s.start == "reference") {  // a control: the reference answer itself
+      opt.start_y = MixedSystem(problem).unknowns(reference.u);
+      opt.start_thresholds = t;
+    }
+    if (s.outer.verbose) {  // the reference's rows, as the descent names them
+      const Eigen::VectorXd d = problem.jumps(reference.u);
+      for (int row = 0; row < 2 * problem.num_nodes(); ++row) {
+        const double r = reference.r[row], scale = reference.r.cwiseAbs().maxCoeff();
+        int code = 0;
+        if (row % 2 == 0) code = std::abs(r) > 1e-9 * scale ? 1 : 0;
+        else if (std::abs(r) > 1e-9 * scale) code = std::abs(std::abs(r) - t[row / 2]) <= 1e-6 * t[row / 2] ? (r < 0 ? 2 : 3) : 1;
+        opt.reference_rows.push_back(code);
+      }
+    }
+  }
+  const double bonded = bonded_solve_seconds(problem);
+  if (s.method == "ipm" && !opt.reference_rows.empty()) {
+    const int m = problem.num_nodes();
+    auto code = [](int v) { return "o|+-"[v]; };
+    std::string sp, sm;
+    for (int k = 0; k < m / 2; ++k) {
+      sp += code(opt.reference_rows[2 * k]), sp += code(opt.reference_rows[2 * k + 1]);
+      sm += code(opt.reference_rows[m + 2 * k]), sm += code(opt.reference_rows[m + 2 * k + 1]);
+    }
+    std::fprintf(stderr, "reference S+ %s\nreference S- %s\n", sp.c_str(), sm.c_str());
+  }
+  if (s.method == "ipm") {
+    InteriorPointOptions ipm;
+    ipm.verbose = opt.verbose;
+    ipm.tresca_thresholds = opt.tresca_thresholds;
+    if (s.start == "limit" || s.start == "reference") {
+      ipm.start_y = opt.start_y;
+      if (s.start == "limit") ipm.start_r = layer_start(limit_model, limit, layer_model, problem).r;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const InteriorPointRun run = solve_layer_interior_point(problem, solver, ipm);
+    const double t = seconds_since(t0);
+    std::printf("%-40s %5d | %4d LUs %3d ipm %3d crossover | %9.2e %4s | %7.3f %7.3f %6.1f\n", name.c_str(),
+                problem.num_nodes() / 2, run.factorisations, run.iterations, run.crossovers, run.report.residual.value(),
+                run.report.converged ? "yes" : "NO", t, bonded, t / bonded);
+    std::fflush(stdout);
+    return;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const TnnmgRun run = solve_tnnmg(problem, solver, opt);
+  const double t = seconds_since(t0);
+  int coulomb = 0, clipped = 0, shifted = 0;
+  double smooth = 0;
+  for (const TnnmgStep& st : run.steps) coulomb += st.coulomb, clipped += st.clipped, shifted += st.shifted, smooth += st.smoothing_s;
+  std::printf("%-40s %5d | %4d LUs %3zu steps (%d coulomb, %d clipped, %d shifted) | %9.2e %4s | %7.3f (smooth %.3f) %7.3f %6.1f\n",
+              name.c_str(), problem.num_nodes() / 2, run.factorisations, run.steps.size(), coulomb, clipped, shifted,
+              run.report.residual.value(), run.report.converged ? "yes" : "NO", t, smooth, bonded, t / bonded);
+  std::fflush(stdout);
+}
+
 void dovetail_scene(const dovetail::MeshOptions& mesh, double friction, const dovetail::Exponents& e,
                     const std::string& law_case, double eps, const std::string& name, const Settings& s) {
   DovetailLimitBulk bulk(mesh, friction);
@@ -335,6 +471,7 @@ void dovetail_scene(const dovetail::MeshOptions& mesh, double friction, const do
   const Model model = dovetail::make_layer_model(meshes, e);
   const LinearSystem system(model);
   const ContactProblem problem(system, dovetail::make_layer_interfaces(model, friction));
+  if (s.method == "tnnmg" || s.method == "ipm") return tnnmg_scene(name, problem, model, bulk.model(), limit.record, s);
   run_scene(name, problem, limit.record.interfaces.at(0), s);
 }
 
@@ -413,6 +550,11 @@ int main(int argc, char** argv) {
     else if (a == "--band-spring") s.outer.band_spring = std::stod(value());
     else if (a == "--film-scale") s.outer.film_scale = std::stod(value());
     else if (a == "--seed") s.seed = value();
+    else if (a == "--start") s.start = value();
+    else if (a == "--tresca-reference") s.tresca_reference = true;
+    else if (a == "--sweeps") s.smoothing_sweeps = std::stoi(value());
+    else if (a == "--closing") s.closing_rounds = std::stoi(value());
+    else if (a == "--releasing") s.releasing = true;
     else if (a == "--verbose") s.outer.verbose = true;
     else throw std::invalid_argument("unknown argument " + a);
   }

@@ -79,7 +79,13 @@ bool SparseLU::factor(const Eigen::SparseMatrix<double>& A) {
   // made of an exact zero (the LU's backward error is of that order): singular to working
   // precision. UMFPACK reports only exact zeros as singular; a layer left floating free by its
   // statuses gives rcond 4e-19 and a finite, meaningless answer (MixedSystem.AFloatingLayerHeld…).
+  numeric_status_ = status;
   return status == UMFPACK_OK && rcond_ >= std::numeric_limits<double>::epsilon();
+}
+
+bool SparseLU::factor_allowing_small_pivots(const Eigen::SparseMatrix<double>& A) {
+  factor(A);
+  return numeric_status_ == UMFPACK_OK;
 }
 
 Eigen::VectorXd SparseLU::solve(const Eigen::VectorXd& b) const {

@@ -24,6 +24,11 @@ class SparseLU {
   // to working precision: a zero pivot, or rcond below the unit round-off (a floating body held by
   // nothing).
   bool factor(const Eigen::SparseMatrix<double>& A);
+  // The same, singular only where a pivot is exactly zero: for a matrix whose pivots legitimately
+  // span more than the double range's digits (an interior-point method's barrier weights, 1e±20 by
+  // the end of its path), where UMFPACK's rcond, the smallest over the largest pivot, says nothing
+  // about the solve's accuracy (the refinement against the original matrix does).
+  bool factor_allowing_small_pivots(const Eigen::SparseMatrix<double>& A);
   // x with A x = b, refined twice.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   // UMFPACK's reciprocal condition estimate of the equilibrated matrix (the smallest over largest
@@ -34,6 +39,7 @@ class SparseLU {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   double rcond_ = 0;
+  int numeric_status_ = 0;
 };
 
 }  // namespace thinlayer

@@ -46,6 +46,7 @@ MixedSystem::MixedSystem(const ContactProblem& problem) : problem_(problem) {
   for (int i = 0; i < n; ++i)
     if (in_band[i] < 0) {
       nodal_y[i] = ny_++;
+      free_of_nodal_y_.push_back(i);
       p.emplace_back(i, nodal_y[i], 1.0);
       F.push_back(system.F()[i]);
     }
@@ -55,6 +56,7 @@ MixedSystem::MixedSystem(const ContactProblem& problem) : problem_(problem) {
   for (const FloatingBand& band : bands) {
     const BandLayout& L = band.layout;
     layouts_.push_back(L);
+    band_free_dof_.push_back(band.free_dof);
     const int offset = ny_;
     bands_.emplace_back(offset, L.size());
     for (int i = 0; i < L.columns; ++i)
@@ -72,6 +74,8 @@ MixedSystem::MixedSystem(const ContactProblem& problem) : problem_(problem) {
   }
   P_.resize(n, ny_);
   P_.setFromTriplets(p.begin(), p.end());
+  K_y_.resize(ny_, ny_);
+  K_y_.setFromTriplets(k.begin(), k.end());
   F_y_ = Eigen::Map<const Eigen::VectorXd>(F.data(), static_cast<Eigen::Index>(F.size()));
   const Eigen::SparseMatrix<double> B = problem.B() * P_;  // 2m × ny
   B_y_ = B;
@@ -102,16 +106,15 @@ MixedSystem::MixedSystem(const ContactProblem& problem) : problem_(problem) {
     }
 }
 
-void MixedSystem::fill(const std::vector<Active>& statuses, Eigen::VectorXd& rhs) {
+void MixedSystem::fill(const std::vector<RowCondition>& rows, Eigen::VectorXd& rhs) {
   const int m2 = 2 * problem_.num_nodes();
+  if (static_cast<int>(rows.size()) != m2) throw std::invalid_argument("MixedSystem: one condition per interface row");
   rhs = Eigen::VectorXd::Zero(ny_ + m2);
   rhs.head(ny_) = F_y_;
-  std::vector<std::pair<bool, bool>>& jumps = jump_rows_;
-  jumps.assign(problem_.num_nodes(), {false, false});
-  for (int node = 0; node < problem_.num_nodes(); ++node) {
-    jumps[node] = jump_rows(statuses[node], problem_.law(node));
-    for (int c = 0; c < 2; ++c)
-      if (c == 0 ? jumps[node].first : jumps[node].second) rhs[ny_ + 2 * node + c] = -problem_.jump_offset()[2 * node + c];
+  jump_rows_.assign(m2, false);
+  for (int row = 0; row < m2; ++row) {
+    jump_rows_[row] = rows[row].jump;
+    rhs[ny_ + row] = rows[row].jump ? -problem_.jump_offset()[row] : rows[row].force;
   }
   double* values = A_.valuePtr();
   for (const Spring& s : springs_) {
@@ -119,26 +122,57 @@ void MixedSystem::fill(const std::vector<Active>& statuses, Eigen::VectorXd& rhs
     rhs[s.y] += s.rho * s.anchor;
   }
   for (const StatusEntry& e : status_entries_) {
-    const int node = e.row / 2, c = e.row % 2;
-    const bool jump = c == 0 ? jumps[node].first : jumps[node].second;
+    const bool jump = rows[e.row].jump;
     switch (e.role) {
       case Role::JumpCoefficient:
         values[e.position] = jump ? e.b : 0.0;
         break;
-      case Role::Diagonal: {  // d = g + C r: the compliance on a jump row; r = 0 (1·r) on a force row
+      case Role::Diagonal: {  // d = g + C r: the compliance on a jump row; 1·r on a force row
         const double C = problem_.compliance()[e.row];
         values[e.position] = jump ? (std::isfinite(C) ? C : 0.0) : 1.0;
         break;
       }
-      case Role::SlideCoupling: {  // SlidePositive: r_T + f r_N = 0; SlideNegative: r_T − f r_N = 0
-        const double f = problem_.law(node).friction;
-        values[e.position] = statuses[node] == Active::SlidePositive ? f
-                             : statuses[node] == Active::SlideNegative ? -f
-                                                                       : 0.0;
+      case Role::SlideCoupling:  // the tangential row's r_N: a Coulomb slide's ±f
+        values[e.position] = jump ? 0.0 : rows[e.row].coupling;
         break;
-      }
     }
   }
+}
+
+std::vector<RowCondition> MixedSystem::row_conditions(const std::vector<Active>& statuses) const {
+  std::vector<RowCondition> rows(2 * problem_.num_nodes());
+  for (int node = 0; node < problem_.num_nodes(); ++node) {
+    const auto [normal, tangential] = jump_rows(statuses[node], problem_.law(node));
+    rows[2 * node].jump = normal;
+    rows[2 * node + 1].jump = tangential;
+    // SlidePositive: r_T + f r_N = 0; SlideNegative: r_T − f r_N = 0.
+    const double f = problem_.law(node).friction;
+    if (statuses[node] == Active::SlidePositive) rows[2 * node + 1].coupling = f;
+    if (statuses[node] == Active::SlideNegative) rows[2 * node + 1].coupling = -f;
+  }
+  return rows;
+}
+
+Eigen::VectorXd MixedSystem::unknowns(const Eigen::VectorXd& u_free) const {
+  Eigen::VectorXd y(ny_);
+  for (size_t j = 0; j < free_of_nodal_y_.size(); ++j) y[j] = u_free[free_of_nodal_y_[j]];
+  for (size_t b = 0; b < bands_.size(); ++b) {
+    const BandLayout& L = layouts_[b];
+    const int offset = bands_[b].first;
+    for (int i = 0; i < L.columns; ++i)
+      for (int c = 0; c < 2; ++c) {
+        const double foot = u_free[band_free_dof_[b][2 * L.node(i, 0) + c]];
+        y[offset + L.t(i) + c] = foot;
+        for (int j = 1; j <= L.across; ++j) y[offset + L.v(i, j) + c] = u_free[band_free_dof_[b][2 * L.node(i, j) + c]] - foot;
+      }
+  }
+  return y;
+}
+
+std::vector<Eigen::VectorXd> MixedSystem::band_coordinates(const Eigen::VectorXd& y) const {
+  std::vector<Eigen::VectorXd> z;
+  for (const auto& [offset, size] : bands_) z.push_back(y.segment(offset, size));
+  return z;
 }
 
 int MixedSystem::band_translation(int band, int column, int component) const {
@@ -179,8 +213,16 @@ void MixedSystem::clear_springs() {
 }
 
 MixedSystem::Answer MixedSystem::solve(const std::vector<Active>& statuses) {
+  return solve(row_conditions(statuses));
+}
+
+MixedSystem::Answer MixedSystem::solve(const std::vector<RowCondition>& rows) {
   Eigen::VectorXd rhs;
-  fill(statuses, rhs);
+  fill(rows, rhs);
+  return factor_and_solve(rhs);
+}
+
+MixedSystem::Answer MixedSystem::factor_and_solve(const Eigen::VectorXd& rhs) {
   Answer answer;
   answer.singular = singular_ = !lu_.factor(A_);
   answer.rcond = lu_.rcond();
@@ -190,7 +232,7 @@ MixedSystem::Answer MixedSystem::solve(const std::vector<Active>& statuses) {
   answer.u = P_ * y;
   answer.y = y;
   answer.r = x.tail(2 * problem_.num_nodes());
-  for (const auto& [offset, size] : bands_) answer.band_z.push_back(y.segment(offset, size));
+  answer.band_z = band_coordinates(y);
   return answer;
 }
 
@@ -201,9 +243,8 @@ MixedSystem::Answer MixedSystem::solve_again(const Eigen::VectorXd& body_forces,
     throw std::invalid_argument("MixedSystem::solve_again: the right-hand side does not fit the problem");
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(ny_ + m2);
   rhs.head(ny_) = P_.transpose() * body_forces;  // a band's nodal forces in its column basis: Pᵀ f
-  for (int node = 0; node < problem_.num_nodes(); ++node)
-    for (int c = 0; c < 2; ++c)
-      if (c == 0 ? jump_rows_[node].first : jump_rows_[node].second) rhs[ny_ + 2 * node + c] = row_values[2 * node + c];
+  for (int row = 0; row < m2; ++row)
+    if (jump_rows_[row]) rhs[ny_ + row] = row_values[row];
   Answer answer;
   answer.singular = singular_;
   answer.rcond = lu_.rcond();

@@ -21,6 +21,15 @@
 
 namespace thinlayer {
 
+// What one interface row of the system says: an equation on the jump, d = B y + g_D + C r = 0 (a
+// row held at its kink: contact, stick, bonded), or a given force, r_row + coupling · r_N = force
+// (open: 0; a Tresca slide: ±s; a Coulomb slide: coupling ±f, force 0).
+struct RowCondition {
+  bool jump = false;
+  double force = 0;     // daN
+  double coupling = 0;  // on the node's r_N (tangential rows only)
+};
+
 class MixedSystem {
  public:
   explicit MixedSystem(const ContactProblem& problem);
@@ -37,6 +46,8 @@ class MixedSystem {
   // One sparse LU with these statuses (one per node of the problem, as the active-set methods
   // name them).
   Answer solve(const std::vector<Active>& statuses);
+  // One sparse LU with one condition per interface row (2 per node, N then T).
+  Answer solve(const std::vector<RowCondition>& rows);
 
   // The unknowns y of the system: each free DOF outside a layer band nodally, then each band in
   // its column basis. The index in y of band b's column-i translation, component c (0: x, 1: y).
@@ -45,6 +56,18 @@ class MixedSystem {
   int band_offset(int band) const { return bands_.at(band).first; }
   // The jumps' rows in y (2m × ny): jumps = B_y y + g_D.
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& B_y() const { return B_y_; }
+  // The bodies' stiffness and load in y (K_y = Pᵀ K P off the bands, each band's column-basis K),
+  // u_free = P y, and band b's layout: the energy ½ yᵀK_y y − F_yᵀ y that the descent methods minimise.
+  const Eigen::SparseMatrix<double>& K_y() const { return K_y_; }
+  const Eigen::VectorXd& F_y() const { return F_y_; }
+  const Eigen::SparseMatrix<double>& P() const { return P_; }
+  const BandLayout& band_layout(int band) const { return layouts_.at(band); }
+  int num_unknowns() const { return ny_; }
+  // The nodal free-DOF displacement and each band's column-basis part of a vector y, and back:
+  // the y of a free-DOF displacement (a band's translations at its feet, its levels relative to them).
+  Eigen::VectorXd displacement(const Eigen::VectorXd& y) const { return P_ * y; }
+  Eigen::VectorXd unknowns(const Eigen::VectorXd& u_free) const;
+  std::vector<Eigen::VectorXd> band_coordinates(const Eigen::VectorXd& y) const;
   // A proximal spring on chosen unknowns of y: ρ_j (daN/mm) added to K's diagonal at y_j, pulling it
   // towards anchor_j (mm). It selects one answer where the problem leaves a film's position free
   // (SPEC §1.5, "Non-unique layers"); clear_springs() returns to the true problem.
@@ -73,13 +96,16 @@ class MixedSystem {
     Role role;
     double b = 0;   // B's coefficient (JumpCoefficient)
   };
-  void fill(const std::vector<Active>& statuses, Eigen::VectorXd& rhs);
+  void fill(const std::vector<RowCondition>& rows, Eigen::VectorXd& rhs);
+  std::vector<RowCondition> row_conditions(const std::vector<Active>& statuses) const;
+  Answer factor_and_solve(const Eigen::VectorXd& rhs);
 
   const ContactProblem& problem_;
   Eigen::SparseMatrix<double> P_;  // u_free = P y
   std::vector<std::pair<int, int>> bands_;  // each band's offset and size in y
   int ny_ = 0;
   Eigen::VectorXd F_y_;
+  Eigen::SparseMatrix<double> K_y_;
   Eigen::SparseMatrix<double> A_;
   Eigen::SparseMatrix<double, Eigen::RowMajor> B_y_;  // the jump rows in y: 2m × ny
   std::vector<StatusEntry> status_entries_;
@@ -91,8 +117,10 @@ class MixedSystem {
   };
   std::vector<Spring> springs_;
   std::vector<BandLayout> layouts_;
+  std::vector<int> free_of_nodal_y_;                 // the free DOF of each nodal unknown of y
+  std::vector<std::vector<int>> band_free_dof_;      // each band's free DOF of node DOF 2·node + c
   SparseLU lu_;
-  std::vector<std::pair<bool, bool>> jump_rows_;  // of the last solve(): which rows are equations d = ...
+  std::vector<bool> jump_rows_;  // of the last solve(): which rows are equations d = ...
   bool factored_ = false;
   bool singular_ = false;
 };
