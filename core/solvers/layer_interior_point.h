@@ -44,9 +44,9 @@ struct InteriorPointOptions {
   // The start: y in MixedSystem's unknowns, and interface forces r (the thresholds and the
   // multipliers' scale). Empty: the bonded start (every row at its kink, one sparse LU).
   Eigen::VectorXd start_y, start_r;
-  int centrality_correctors = 2;
-  bool smoothed_crossover = false;
-  bool centred_start = false;         // raise the start's products to their mean     // crossover statuses from the block smoother (else Tapia's reading)      // Gondzio's, per iteration (solves on the iteration's factor)
+  int centrality_correctors = 2;      // Gondzio's, per iteration (solves on the iteration's factor)
+  bool smoothed_crossover = false;    // crossover statuses from the block smoother (else Tapia's reading)
+  bool centred_start = false;         // raise the start's products to their mean
   bool verbose = false;
 };
 
