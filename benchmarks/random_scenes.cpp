@@ -12,6 +12,7 @@
 // run. One BLAS thread, as in every study.
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,7 +26,7 @@ namespace thinlayer {
 namespace {
 
 struct Row {
-  std::string description, stop_cause;
+  std::string description, stop_cause, method;
   int steps = 0;
   double residual = 0, floor = 0, solve_s = 0, setup_s = 0;
   bool converged = false;
@@ -38,7 +39,8 @@ double quantile(std::vector<double> v, double q) {
 }
 
 int usage() {
-  std::fprintf(stderr, "usage: thinlayer_random_scenes --seeds FIRST-LAST [--h-min H] [--csv FILE] [--list | --accuracy]\n");
+  std::fprintf(stderr, "usage: thinlayer_random_scenes --seeds FIRST-LAST [--h-min H] [--csv FILE] "
+                       "[--layer-method interior-point|ladder] [--list | --accuracy]\n");
   return 2;
 }
 
@@ -81,7 +83,7 @@ Determined distance(const SceneRecord& a, const SceneRecord& b) {
 
 // Target 3 of issue 25: each seed at the default tolerance 1e-10 and at 1e-13; the determined
 // quantities should agree within 1e-8 where both converge.
-int accuracy(int first, int last, const GeneratorRanges& ranges) {
+int accuracy(int first, int last, const GeneratorRanges& ranges, const SolverOptions& base) {
   std::printf("%-72s %10s %10s %10s %10s %10s\n", "scene", "res 1e-10", "res 1e-13", "adherents", "forces S",
               "reactions");
   int compared = 0, within = 0;
@@ -90,10 +92,10 @@ int accuracy(int first, int last, const GeneratorRanges& ranges) {
     const GeneratedScene scene = generate_scene(seed, ranges);
     std::printf("%-72s", scene.describe().c_str());
     std::fflush(stdout);
-    SolverOptions tight;
+    SolverOptions tight = base;
     tight.tolerance = 1e-13;
     try {
-      const GeneratedOutcome a = solve_generated(scene, {}, THINLAYER_CASES_DIR);
+      const GeneratedOutcome a = solve_generated(scene, base, THINLAYER_CASES_DIR);
       const GeneratedOutcome b = solve_generated(scene, tight, THINLAYER_CASES_DIR);
       const Determined d = distance(a.record, b.record);
       std::printf(" %10.2e %10.2e %10.2e %10.2e %10.2e%s\n", a.report.residual.value(), b.report.residual.value(),
@@ -118,6 +120,7 @@ int run(int argc, char** argv) {
   GeneratorRanges ranges;
   std::string csv;
   bool list = false, accuracy_mode = false;
+  SolverOptions options;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--seeds" && i + 1 < argc) {
@@ -129,13 +132,18 @@ int run(int argc, char** argv) {
       list = true;
     } else if (a == "--accuracy") {
       accuracy_mode = true;
+    } else if (a == "--layer-method" && i + 1 < argc) {
+      const std::string m = argv[++i];
+      if (m == "ladder") options.layer_method = LayerMethod::Ladder;
+      else if (m == "interior-point") options.layer_method = LayerMethod::InteriorPoint;
+      else return usage();
     } else if (a == "--csv" && i + 1 < argc) {
       csv = argv[++i];
     } else {
       return usage();
     }
   }
-  if (accuracy_mode) return accuracy(first, last, ranges);
+  if (accuracy_mode) return accuracy(first, last, ranges, options);
   if (list) {
     for (int seed = first; seed <= last; ++seed) std::printf("%s\n", generate_scene(seed, ranges).describe().c_str());
     return 0;
@@ -149,7 +157,8 @@ int run(int argc, char** argv) {
     std::printf("%-72s", row.description.c_str());
     std::fflush(stdout);
     try {
-      const GeneratedOutcome o = solve_generated(scene, {}, THINLAYER_CASES_DIR);
+      const GeneratedOutcome o = solve_generated(scene, options, THINLAYER_CASES_DIR);
+      row.method = o.report.method;
       row.steps = o.report.iterations;
       row.residual = o.report.residual.value();
       row.floor = o.report.residual.floor();
@@ -160,8 +169,8 @@ int run(int argc, char** argv) {
     } catch (const std::exception& e) {
       row.stop_cause = std::string("threw: ") + e.what();
     }
-    std::printf(" %6d %10.2e %10.2e %8.3f %8.3f  %s\n", row.steps, row.residual, row.floor,
-                row.solve_s, row.setup_s, row.stop_cause.c_str());
+    std::printf(" %6d %10.2e %10.2e %8.3f %8.3f  %s  [%s]\n", row.steps, row.residual, row.floor,
+                row.solve_s, row.setup_s, row.stop_cause.c_str(), row.method.c_str());
     std::fflush(stdout);
     rows.push_back(row);
   }
@@ -173,6 +182,11 @@ int run(int argc, char** argv) {
     times.push_back(r.solve_s + r.setup_s);
   }
   std::printf("\n%d of %zu seeds converged\n", converged, rows.size());
+  std::map<std::string, int> methods;
+  for (const Row& r : rows) ++methods[r.method.empty() ? "-" : r.method];
+  std::printf("methods:");
+  for (const auto& [m, n] : methods) std::printf(" %s %d;", m.c_str(), n);
+  std::printf("\n");
   std::printf("steps: median %.0f, 90 %% %.0f, max %.0f; setup+solve: median %.3f s, 90 %% %.3f s, max %.3f s\n",
               quantile(steps, 0.5), quantile(steps, 0.9), quantile(steps, 1.0), quantile(times, 0.5),
               quantile(times, 0.9), quantile(times, 1.0));
@@ -185,10 +199,10 @@ int run(int argc, char** argv) {
                 rows[order[i]].stop_cause.c_str());
   if (!csv.empty()) {
     std::ostringstream out;
-    out << "seed_description,converged,steps,residual,roundoff_floor,solve_s,setup_s,stop_cause\n";
+    out << "seed_description,converged,steps,residual,roundoff_floor,solve_s,setup_s,stop_cause,method\n";
     for (const Row& r : rows)
       out << '"' << r.description << "\"," << r.converged << "," << r.steps << "," << r.residual << "," << r.floor << ","
-          << r.solve_s << "," << r.setup_s << ",\"" << r.stop_cause << "\"\n";
+          << r.solve_s << "," << r.setup_s << ",\"" << r.stop_cause << "\",\"" << r.method << "\"\n";
     write_text_atomically(csv, out.str());
   }
   return converged == static_cast<int>(rows.size()) ? 0 : 1;

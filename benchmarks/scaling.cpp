@@ -105,6 +105,9 @@ std::string line_of(double seconds, const SolveReport* report, const SceneRecord
   return s.str();
 }
 
+// The layer mode's method (--layer-method): the interior-point method first (the default) or the ladder.
+SolverOptions layer_options;
+
 double setup_and_solve(const SceneRecord& record, const SolveReport& report) {
   return (record.numbers.count("setup_time_s") ? record.numbers.at("setup_time_s") : 0.0) + report.wall_time_s;
 }
@@ -126,7 +129,7 @@ Level joint_level(const std::string& path, double h, int timeout_s) {
   Level level;
   level.layer = in_child([&] {
     const SceneFileBulk bulk(joint_at(path, h));
-    const SceneFileScene s = solve_scene_file_layer(bulk, 0.0, SolverKind::Fast, {});
+    const SceneFileScene s = solve_scene_file_layer(bulk, 0.0, SolverKind::Fast, layer_options);
     return line_of(setup_and_solve(s.record, s.report), &s.report, &s.record);
   }, timeout_s);
   level.limit = in_child([&] {
@@ -210,7 +213,8 @@ Level dovetail_level(char law_case, double eps, double h, int timeout_s) {
   level.layer = in_child([&] {
     const DovetailLimitBulk bulk(mesh);
     const DovetailScene s =
-        solve_dovetail_layer(bulk, dovetail::exponents_of(law_case), eps, std::string(1, law_case), SolverKind::Fast, {});
+        solve_dovetail_layer(bulk, dovetail::exponents_of(law_case), eps, std::string(1, law_case), SolverKind::Fast,
+                             layer_options);
     return line_of(setup_and_solve(s.record, s.report), &s.report, &s.record);
   }, timeout_s);
   level.limit = in_child([&] {
@@ -252,6 +256,7 @@ std::vector<double> parse_list(const std::string& text) {
 int usage() {
   std::fprintf(stderr,
                "usage: thinlayer_scaling (--joint FILE.json | --dovetail CASE:EPS) --sizes H1,H2,... [--timeout S]\n"
+               "       [--layer-method interior-point|ladder]\n"
                "       thinlayer_scaling --limit FILE.json --sizes H1,H2,... [--before 1] [--timeout S]\n");
   return 2;
 }
@@ -267,6 +272,11 @@ int run(int argc, char** argv) {
     else if (key == "--dovetail") dovetail_scene = value;
     else if (key == "--sizes") sizes = parse_list(value);
     else if (key == "--timeout") timeout_s = std::stoi(value);
+    else if (key == "--layer-method") {
+      if (value == "ladder") layer_options.layer_method = LayerMethod::Ladder;
+      else if (value == "interior-point") layer_options.layer_method = LayerMethod::InteriorPoint;
+      else throw std::invalid_argument("--layer-method: interior-point or ladder");
+    }
     else if (key == "--limit") limit_joint = value;
     else if (key == "--before") before = value == "1";
     else return usage();

@@ -54,6 +54,9 @@ struct Settings {
   int smoothing_sweeps = 1;
   int closing_rounds = 0;
   bool releasing = false;
+  double handover = 0;             // ipm: hand over to the descent at this iterate residual
+  double hybrid = 1e3;
+  bool newton_crossover = true;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -438,12 +441,31 @@ void tnnmg_scene(const std::string& name, const ContactProblem& problem, const M
     InteriorPointOptions ipm;
     ipm.verbose = opt.verbose;
     ipm.tresca_thresholds = opt.tresca_thresholds;
+    ipm.hybrid_margin = s.hybrid;
+    ipm.newton_crossover = s.newton_crossover;
     if (s.start == "limit" || s.start == "reference") {
       ipm.start_y = opt.start_y;
       if (s.start == "limit") ipm.start_r = layer_start(limit_model, limit, layer_model, problem).r;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const InteriorPointRun run = solve_layer_interior_point(problem, solver, ipm);
+    if (s.handover > 0) ipm.stop_at_iterate_residual = s.handover;
+    InteriorPointRun run = solve_layer_interior_point(problem, solver, ipm);
+    if (s.handover > 0 && !run.report.converged) {  // the descent from the interior iterate
+      TnnmgOptions t;
+      t.verbose = opt.verbose;
+      t.closing_rounds = s.closing_rounds;
+      t.releasing = s.releasing;
+      t.start_y = run.last_y;
+      t.start_thresholds = Eigen::VectorXd::Zero(problem.num_nodes());
+      for (int k = 0; k < problem.num_nodes(); ++k)
+        t.start_thresholds[k] = problem.law(k).friction * std::max(0.0, -run.last_r[2 * k]);
+      t.max_factorisations = 40 - run.factorisations;
+      const TnnmgRun tr = solve_tnnmg(problem, solver, t);
+      run.factorisations += tr.factorisations;
+      if (tr.report.residual.value() < run.report.residual.value()) run.report = tr.report;
+      std::fprintf(stderr, "handover at %.2e: tnnmg %d LUs, residual %.2e\n", run.last_residual, tr.factorisations,
+                   tr.report.residual.value());
+    }
     const double t = seconds_since(t0);
     std::printf("%-40s %5d | %4d LUs %3d ipm %3d crossover | %9.2e %4s | %7.3f %7.3f %6.1f\n", name.c_str(),
                 problem.num_nodes() / 2, run.factorisations, run.iterations, run.crossovers, run.report.residual.value(),
@@ -555,6 +577,9 @@ int main(int argc, char** argv) {
     else if (a == "--sweeps") s.smoothing_sweeps = std::stoi(value());
     else if (a == "--closing") s.closing_rounds = std::stoi(value());
     else if (a == "--releasing") s.releasing = true;
+    else if (a == "--handover") s.handover = std::stod(value());
+    else if (a == "--hybrid") s.hybrid = std::stod(value());
+    else if (a == "--no-newton-crossover") s.newton_crossover = false;
     else if (a == "--verbose") s.outer.verbose = true;
     else throw std::invalid_argument("unknown argument " + a);
   }

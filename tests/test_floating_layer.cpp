@@ -33,6 +33,7 @@ struct CoarseDovetailLayer {
   }
   SolveReport solve(LayerSelection selection = LayerSelection::MinusFace) const {
     SolverOptions options;
+    options.layer_method = LayerMethod::Ladder;  // the ladder's own behaviour
     options.layer_selection = selection;
     return solve_fast(*problem, *condensed, options);
   }
@@ -113,10 +114,12 @@ TEST(FloatingLayer, TwoSelectionsAgreeOnWhatTheProblemDetermines) {
 // only the film's in-plane stiffness resists: the accelerated proximal steps follow it there).
 TEST(FloatingLayer, ConvergesTheScenesEarlierSolversCouldNot) {
   const DovetailLimitBulk bulk;
+  SolverOptions ladder;
+  ladder.layer_method = LayerMethod::Ladder;
   for (char c : {'e', 'c'}) {
     const double eps = c == 'e' ? 1e-4 : 5e-4;
     const DovetailScene s = solve_dovetail_layer(bulk, dovetail::exponents_of(c), eps, std::string(1, c),
-                                                 SolverKind::Fast, SolverOptions{});
+                                                 SolverKind::Fast, ladder);
     EXPECT_TRUE(s.report.converged) << c << ": " << s.report.message;
     EXPECT_LE(s.report.residual.value(), 1e-10);
   }
@@ -124,7 +127,7 @@ TEST(FloatingLayer, ConvergesTheScenesEarlierSolversCouldNot) {
   for (int row : {3, 5, 6}) {
     const Table3Row& law = rows.at(row - 1);
     const BarLayerScene s = solve_bar_layer(bar::MeshOptions{}, law.lambda_bar, law.mu_bar, 1e-6,
-                                            "table3-row-" + std::to_string(row), SolverKind::Fast, SolverOptions{});
+                                            "table3-row-" + std::to_string(row), SolverKind::Fast, ladder);
     EXPECT_TRUE(s.report.converged) << "row " << row << ": " << s.report.message;
   }
 }
@@ -166,7 +169,9 @@ struct StiffSlidingBarLayer {
     system = std::make_unique<LinearSystem>(model);
     problem = std::make_unique<ContactProblem>(*system, bar::make_layer_interfaces(model));
     condensed = std::make_unique<CondensedInterface>(*problem);
-    report = solve_fast(*problem, *condensed, SolverOptions{});
+    SolverOptions ladder;  // the ladder's answer, given in the band's column basis (report.w)
+    ladder.layer_method = LayerMethod::Ladder;
+    report = solve_fast(*problem, *condensed, ladder);
   }
   int layer_body() const {
     for (int b = 0; b < system->num_bodies(); ++b)
@@ -224,6 +229,7 @@ TEST(FloatingLayer, FollowsAFilmSofterThanTheSpringAtEps1e8) {
   std::vector<Eigen::VectorXd> reactions, adherents;
   for (LayerSelection face : {LayerSelection::MinusFace, LayerSelection::PlusFace}) {
     SolverOptions options;
+    options.layer_method = LayerMethod::Ladder;
     options.layer_selection = face;
     const SolveReport report = solve_fast(problem, condensed, options);
     EXPECT_TRUE(report.converged) << report.message;

@@ -98,7 +98,7 @@ BarLayerScene solve_bar_layer(const bar::MeshOptions& mesh, double lambda_bar, d
   const LinearSystem system(model);
   const ContactProblem problem(system, bar::make_layer_interfaces(model));
   std::unique_ptr<CondensedInterface> condensed;
-  if (solver == SolverKind::Fast) condensed = std::make_unique<CondensedInterface>(problem);
+  if (solver == SolverKind::Fast && needs_condensation(problem, options)) condensed = std::make_unique<CondensedInterface>(problem);
   BarLayerScene scene;
   scene.layer_quality = mesh_quality(model.bodies[1].mesh);
   scene.report = run_solver(problem, condensed.get(), solver, options);

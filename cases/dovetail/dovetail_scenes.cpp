@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/io/scene_id_number.h"
+#include "core/solvers/fast_solver.h"
 
 namespace thinlayer {
 
@@ -103,7 +104,7 @@ DovetailScene solve_dovetail_layer(const DovetailLimitBulk& bulk, const dovetail
   const LinearSystem system(model);
   const ContactProblem problem(system, dovetail::make_layer_interfaces(model, bulk.friction()));
   std::unique_ptr<CondensedInterface> condensed;
-  if (solver == SolverKind::Fast) condensed = std::make_unique<CondensedInterface>(problem);
+  if (solver == SolverKind::Fast && needs_condensation(problem, options)) condensed = std::make_unique<CondensedInterface>(problem);
   scene.report = run_solver(problem, condensed.get(), solver, options);
 
   SceneRecord& r = scene.record;

@@ -11,6 +11,7 @@
 #include "cases/scene/scene_checks.h"
 #include "cases/scene/scene_reference.h"
 #include "core/io/scene_id_number.h"
+#include "core/solvers/fast_solver.h"
 #include "core/solvers/bonded_solve.h"
 #include "core/solvers/sparse_newton.h"
 #include "core/io/units.h"
@@ -302,7 +303,7 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
   const LinearSystem system(layer.model);
   const ContactProblem problem(system, layer.interfaces);
   std::unique_ptr<CondensedInterface> condensed;
-  if (solver == SolverKind::Fast && !every_interface_bonded(problem)) condensed = std::make_unique<CondensedInterface>(problem);
+  if (solver == SolverKind::Fast && needs_condensation(problem, options)) condensed = std::make_unique<CondensedInterface>(problem);
   SceneFileScene scene;
   scene.report = run_solver(problem, condensed.get(), solver, options);
   SceneRecord& r = scene.record;

@@ -95,4 +95,11 @@ Eigen::VectorXd SparseLU::solve(const Eigen::VectorXd& b) const {
   return x;
 }
 
+Eigen::VectorXd SparseLU::solve_once_refined(const Eigen::VectorXd& b) const {
+  const Impl& m = *impl_;
+  Eigen::VectorXd x = m.raw_solve(b);
+  x += m.raw_solve(b - m.A * x);
+  return x;
+}
+
 }  // namespace thinlayer

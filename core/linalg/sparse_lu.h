@@ -31,6 +31,9 @@ class SparseLU {
   bool factor_allowing_small_pivots(const Eigen::SparseMatrix<double>& A);
   // x with A x = b, refined twice.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // x with A x = b, refined once with the residual in double: a direction (an interior-point
+  // method's), whose errors the next iteration's residuals see and correct, needs no more.
+  Eigen::VectorXd solve_once_refined(const Eigen::VectorXd& b) const;
   // UMFPACK's reciprocal condition estimate of the equilibrated matrix (the smallest over largest
   // |U_ii|: crude, for reports).
   double rcond() const { return rcond_; }

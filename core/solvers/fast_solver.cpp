@@ -15,6 +15,7 @@
 #include "core/solvers/bonded_solve.h"
 #include "core/solvers/floating_layer.h"
 #include "core/solvers/friction_path.h"
+#include "core/solvers/layer_interior_point.h"
 #include "core/solvers/mixed_system.h"
 #include "core/solvers/sparse_newton.h"
 
@@ -178,6 +179,30 @@ bool sparse_newton_first(const ContactProblem& problem, const SolverOptions& opt
          options.initial_w.size() == 0;
 }
 
+// A problem with a layer band takes the interior-point method first (core/solvers/layer_interior_point.h:
+// no dense operator, a sparse factorisation an iteration); where it stops short of the tolerance the
+// ladder takes over from rest, its steps added and its message saying so. An answer the interior-point
+// method leaves at its round-off floor is final, as the sparse Newton's.
+InteriorPointOptions interior_point_options(const SolverOptions& options) {
+  InteriorPointOptions ipm;
+  if (options.max_iterations > 0) ipm.max_factorisations = options.max_iterations;
+  ipm.verbose = options.verbose;
+  return ipm;
+}
+
+bool interior_point_first(const ContactProblem& problem, const SolverOptions& options) {
+  return options.layer_method == LayerMethod::InteriorPoint && layer_interior_point_applies(problem) &&
+         options.friction_path.empty() && options.initial_r.size() == 0 && options.initial_w.size() == 0;
+}
+
+SolveReport after_interior_point(const SolveReport& ipm, SolveReport fallback) {
+  fallback.iterations += ipm.iterations;
+  fallback.wall_time_s += ipm.wall_time_s;
+  fallback.method = fallback.method + " after layer interior point";
+  fallback.message += "; taken over from the layer interior point, which stopped: " + ipm.message;
+  return fallback;
+}
+
 SolveReport after_sparse_newton(const SparseNewtonRun& newton, SolveReport fallback) {
   fallback.iterations += newton.report.iterations;
   fallback.wall_time_s += newton.report.wall_time_s;
@@ -187,6 +212,10 @@ SolveReport after_sparse_newton(const SparseNewtonRun& newton, SolveReport fallb
 }
 
 }  // namespace
+
+bool needs_condensation(const ContactProblem& problem, const SolverOptions& options) {
+  return !every_interface_bonded(problem) && !interior_point_first(problem, options);
+}
 
 SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& condensed,
                        const SolverOptions& options) {
@@ -199,6 +228,11 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
                                 std::to_string(options.initial_w.size()) + " entries, the problem " +
                                 std::to_string(condensed.num_floating_unknowns()));
   if (every_interface_bonded(problem)) return solve_bonded(problem, options);  // linear: no status to search
+  if (interior_point_first(problem, options)) {
+    const SolveReport ipm = solve_layer_interior_point(problem, options, interior_point_options(options)).report;
+    if (ipm.converged || ipm.stop_cause == StopCause::RoundOffFloor) return ipm;
+    return after_interior_point(ipm, attempt(problem, condensed, options));
+  }
   if (sparse_newton_first(problem, options)) {
     const SparseNewtonRun newton = solve_sparse_newton(problem, options);
     if (newton.report.converged || newton.report.stop_cause == StopCause::RoundOffFloor) return newton.report;
@@ -210,6 +244,12 @@ SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& 
 
 SolveReport solve_fast(const ContactProblem& problem, const SolverOptions& options) {
   if (every_interface_bonded(problem)) return solve_bonded(problem, options);  // nothing to condense
+  if (interior_point_first(problem, options)) {  // condensed only if the ladder has to take over
+    const SolveReport ipm = solve_layer_interior_point(problem, options, interior_point_options(options)).report;
+    if (ipm.converged || ipm.stop_cause == StopCause::RoundOffFloor) return ipm;
+    const CondensedInterface condensed(problem);
+    return after_interior_point(ipm, attempt(problem, condensed, options));
+  }
   if (sparse_newton_first(problem, options)) {  // condensed only if it has to take over
     const SparseNewtonRun newton = solve_sparse_newton(problem, options);
     if (newton.report.converged || newton.report.stop_cause == StopCause::RoundOffFloor) return newton.report;

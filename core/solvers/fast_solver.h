@@ -16,6 +16,11 @@ namespace thinlayer {
 SolveReport solve_fast(const ContactProblem& problem, const CondensedInterface& condensed,
                        const SolverOptions& options = {});
 
+// Whether solve_fast needs the condensation of this problem up front: not where the problem is bonded
+// on every face (one sparse solve) nor where a layer takes the interior-point method first (the
+// condensation is built only if the ladder has to take over).
+bool needs_condensation(const ContactProblem& problem, const SolverOptions& options);
+
 // Convenience: factor and condense, then solve (for one-off scenes).
 SolveReport solve_fast(const ContactProblem& problem, const SolverOptions& options = {});
 

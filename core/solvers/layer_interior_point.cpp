@@ -128,7 +128,7 @@ class ReducedMatrix {
       for (const auto& [pos, value] : products_[i]) M_.valuePtr()[pos] += theta[i] * value;
     return lu_.factor_allowing_small_pivots(M_);
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const { return lu_.solve(rhs); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const { return lu_.solve_once_refined(rhs); }
   double rcond() const { return lu_.rcond(); }
 
  private:
@@ -158,6 +158,10 @@ double largest_step(const Eigen::VectorXd& v, const Eigen::VectorXd& dv) {
 
 }  // namespace
 
+bool layer_interior_point_applies(const ContactProblem& problem) {
+  return !problem.system().floating_bands().empty() && layer_descent_applies(problem);
+}
+
 InteriorPointRun solve_layer_interior_point(const ContactProblem& problem, const SolverOptions& options,
                                             const InteriorPointOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
@@ -167,7 +171,7 @@ InteriorPointRun solve_layer_interior_point(const ContactProblem& problem, const
   best.method = "layer interior point";
   best.tolerance = options.tolerance;
   best.residual.interface = best.residual.bulk = std::numeric_limits<double>::infinity();
-  if (problem.system().floating_bands().empty() || !layer_descent_applies(problem)) {
+  if (!layer_interior_point_applies(problem)) {
     run.applies = false;
     run.why_not = "no layer band, or an interface law with a finite spring";
     return run;
@@ -337,11 +341,63 @@ InteriorPointRun solve_layer_interior_point(const ContactProblem& problem, const
     }
     return out;
   };
+  // The hybrid crossover's rows: a row whose pair the iterate classifies with a margin Q (its
+  // multiplier above Q times its slack's force κ w, or below 1/Q of it, κ the SPEC residual's
+  // stiffness of the row) takes its exact condition; a row it cannot classify keeps the barrier's
+  // linearisation about the iterate — for an obstacle pair the tangent of w z = μ at (d, r) = (−w, −z),
+  // r + Θ d = −2z, Θ = z/w, i.e. d + r/Θ = −2w; for a friction row the reduced relation Δr_T = −θ Δd_T.
+  // An unclassified row is one whose multiplier and slack are both small (a film touching with no
+  // force, a stick at its slip threshold): its share of the natural map, min(z, κ w), is small
+  // whichever way, and committing it exactly (the plain crossover) moved a film's isolated contacts
+  // elsewhere.
+  auto hybrid_rows = [&](const Iterate& it) {
+    const double Q = opt.hybrid_margin;
+    const Eigen::VectorXd& kappa = problem.kappa();
+    const Eigen::VectorXd d = B * it.y + g;
+    std::vector<RowCondition> c(2 * problem.num_nodes());
+    std::vector<int> normal_class(problem.num_nodes(), 0);  // 1 contact, 0 open, 2 unclassified
+    for (int e = 0; e < nE; ++e) c[rows.equality[e]].jump = true;
+    for (int i = 0; i < nO; ++i) {
+      const int row = rows.obstacle[i];
+      const double q = it.zO[i] / (kappa[row] * it.wO[i]);
+      if (q >= Q) c[row].jump = true, normal_class[row / 2] = 1;
+      else if (q > 1 / Q) {
+        c[row].jump = true;
+        c[row].compliance = it.wO[i] / it.zO[i];
+        c[row].force = -2 * it.wO[i];
+        normal_class[row / 2] = 2;
+      }
+    }
+    for (int j = 0; j < nF; ++j) {
+      const int row = rows.friction[j], k = row / 2;
+      if (normal_class[k] == 0) continue;  // open: no friction force
+      const double f = problem.law(k).friction;
+      const double qP = it.zP[j] / (kappa[row] * it.wP[j]), qM = it.zM[j] / (kappa[row] * it.wM[j]);
+      if (qP >= Q && qM >= Q) c[row].jump = true;                                          // stick
+      else if (qP >= Q && qM <= 1 / Q) c[row].coupling = tresca ? 0.0 : -f,                 // r_T = f r_N
+                                       c[row].force = tresca ? -s[j] : 0.0;
+      else if (qM >= Q && qP <= 1 / Q) c[row].coupling = tresca ? 0.0 : f,                  // r_T = −f r_N
+                                       c[row].force = tresca ? s[j] : 0.0;
+      else {
+        const double Dp = it.zP[j] / it.wP[j], Dm = it.zM[j] / it.wM[j], theta = 4 * Dp * Dm / (Dp + Dm);
+        const double rT = it.zM[j] - it.zP[j];
+        if (theta > 0) {
+          c[row].jump = true;
+          c[row].compliance = 1 / theta;
+          c[row].force = d[row] + rT / theta;
+        } else {
+          c[row].force = rT;
+        }
+      }
+    }
+    return c;
+  };
   std::set<std::vector<Active>> tried;
   std::vector<Active> previous;
   int stalled = 0;  // consecutive iterations whose step was cut below a tenth
   bool frozen = false, previous_readable = false, moving = false;
   double last_attempt = std::numeric_limits<double>::infinity();
+  double factor_s = 0, judge_s = 0;
   bool converged = false;
   while (run.factorisations < opt.max_factorisations && !converged) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -376,7 +432,9 @@ InteriorPointRun solve_layer_interior_point(const ContactProblem& problem, const
       if (!tresca && !frozen) coupling[j] = problem.law(rows.friction[j] / 2).friction * (Dp - Dm) / (Dp + Dm);
       theta[nO + nF + j] = rows.normal_of_friction[j] >= 0 ? coupling[j] * theta[rows.normal_of_friction[j]] : 0.0;
     }
+    const auto tf = std::chrono::steady_clock::now();
     const bool factored = M.factor(theta);
+    factor_s += seconds_since(tf);
     ++run.factorisations;
     ++run.iterations;
     if (!factored) {
@@ -518,8 +576,14 @@ InteriorPointRun solve_layer_interior_point(const ContactProblem& problem, const
     const std::vector<Active> statuses_read = statuses;
     // The iterate itself, judged as an answer: near the end of the path its natural map is of the
     // order of μ / (its pairs' scales), its equilibrium residual that of the last solve.
+    const auto tj = std::chrono::steady_clock::now();
     const double iterate_residual = judge_iterate(x);
+    judge_s += seconds_since(tj);
     if (iterate_residual <= options.tolerance) converged = true;
+    run.last_y = x.y;
+    run.last_r = forces(x);
+    run.last_residual = iterate_residual;
+    if (opt.stop_at_iterate_residual > 0 && iterate_residual <= opt.stop_at_iterate_residual) break;
     int xsteps = 0;
     double xres = std::numeric_limits<double>::infinity();
     // Crossover where the statuses the iterate reads repeat, or where the path stalls (a step cut
@@ -542,8 +606,18 @@ InteriorPointRun solve_layer_interior_point(const ContactProblem& problem, const
     const bool repeats = previous_readable && statuses == previous;
     const bool attempt = !converged && readable && (repeats || worth);
     if (attempt) last_attempt = iterate_residual;
-    if (attempt) {
+    if (attempt && !converged) {
       if (opt.smoothed_crossover) statuses = smoothed_statuses(x.y);
+      if (opt.hybrid_margin > 0 && run.factorisations < opt.max_factorisations) {
+        const MixedSystem::Answer h = mixed.solve(hybrid_rows(x));
+        ++run.factorisations;
+        ++run.crossovers;
+        ++xsteps;
+        const double res = judge(h);
+        if (opt.verbose) std::fprintf(stderr, "      hybrid crossover: %.3e\n", res);
+        xres = std::min(xres, res);
+        if (res <= options.tolerance) converged = true;
+      }
       // Damped Newton steps from the iterate: the exact answer of the statuses, then the point along
       // the way from the current point to it with the smallest SPEC residual (halving from 1 to 1/64:
       // evaluations, no factorisation), the statuses re-read there — a film whose isolated contacts a
@@ -554,7 +628,9 @@ InteriorPointRun solve_layer_interior_point(const ContactProblem& problem, const
       point.r = forces(x);
       point.band_z = mixed.band_coordinates(x.y);
       double point_residual = iterate_residual;
-      for (int newton = 0; run.factorisations < opt.max_factorisations && tried.insert(statuses).second; ++newton) {
+      for (int newton = 0; !converged && opt.newton_crossover && run.factorisations < opt.max_factorisations &&
+                           tried.insert(statuses).second;
+           ++newton) {
         const MixedSystem::Answer a = crossover(statuses);
         ++xsteps;
         if (a.singular || !a.u.allFinite() || !a.r.allFinite()) break;
@@ -589,6 +665,7 @@ InteriorPointRun solve_layer_interior_point(const ContactProblem& problem, const
       std::fprintf(stderr, "  ipm %2d: %2d LUs, mu %.2e, sigma %.2e, alpha %.3f, |r_y| %.2e, iterate %.2e, crossover %d (%.2e), %.3f s\n",
                    run.iterations, run.factorisations, mu, sigma, alpha, r_y.norm(), iterate_residual, xsteps, xres, seconds_since(t0));
   }
+  if (opt.verbose) std::fprintf(stderr, "  ipm: factorisations %.3f s, judging iterates %.3f s, total %.3f s\n", factor_s, judge_s, seconds_since(start));
   best.iterations = run.factorisations;
   best.converged = best.residual.value() <= options.tolerance;
   best.stop_cause = best.converged ? StopCause::Converged

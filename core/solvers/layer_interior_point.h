@@ -47,6 +47,9 @@ struct InteriorPointOptions {
   int centrality_correctors = 2;      // Gondzio's, per iteration (solves on the iteration's factor)
   bool smoothed_crossover = false;    // crossover statuses from the block smoother (else Tapia's reading)
   bool centred_start = false;         // raise the start's products to their mean
+  double hybrid_margin = 0;           // the hybrid crossover's margin Q (0: none)
+  bool newton_crossover = true;       // the exact crossover of Tapia's statuses and its Newton steps
+  double stop_at_iterate_residual = 0;  // > 0: stop once the iterate's SPEC residual is below it
   bool verbose = false;
 };
 
@@ -57,7 +60,12 @@ struct InteriorPointRun {
   int crossovers = 0;                 // exact solves of guessed statuses
   bool applies = true;
   std::string why_not;
+  Eigen::VectorXd last_y, last_r;     // the last interior iterate (a warm start for another method)
+  double last_residual = 0;           // its SPEC residual
 };
+
+// Does the method apply: a layer band, and every interface row rigid or free (descent_blocks.h).
+bool layer_interior_point_applies(const ContactProblem& problem);
 
 InteriorPointRun solve_layer_interior_point(const ContactProblem& problem, const SolverOptions& options,
                                             const InteriorPointOptions& ipm = {});

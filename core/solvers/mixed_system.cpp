@@ -114,7 +114,7 @@ void MixedSystem::fill(const std::vector<RowCondition>& rows, Eigen::VectorXd& r
   jump_rows_.assign(m2, false);
   for (int row = 0; row < m2; ++row) {
     jump_rows_[row] = rows[row].jump;
-    rhs[ny_ + row] = rows[row].jump ? -problem_.jump_offset()[row] : rows[row].force;
+    rhs[ny_ + row] = rows[row].jump ? rows[row].force - problem_.jump_offset()[row] : rows[row].force;
   }
   double* values = A_.valuePtr();
   for (const Spring& s : springs_) {
@@ -129,7 +129,7 @@ void MixedSystem::fill(const std::vector<RowCondition>& rows, Eigen::VectorXd& r
         break;
       case Role::Diagonal: {  // d = g + C r: the compliance on a jump row; 1·r on a force row
         const double C = problem_.compliance()[e.row];
-        values[e.position] = jump ? (std::isfinite(C) ? C : 0.0) : 1.0;
+        values[e.position] = jump ? (std::isfinite(C) ? C : 0.0) + rows[e.row].compliance : 1.0;
         break;
       }
       case Role::SlideCoupling:  // the tangential row's r_N: a Coulomb slide's ±f

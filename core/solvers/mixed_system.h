@@ -21,13 +21,16 @@
 
 namespace thinlayer {
 
-// What one interface row of the system says: an equation on the jump, d = B y + g_D + C r = 0 (a
-// row held at its kink: contact, stick, bonded), or a given force, r_row + coupling · r_N = force
+// What one interface row of the system says: an equation on the jump,
+// d = B y + g_D + (C + compliance) r = force (a row held at its kink: contact, stick, bonded, with
+// force = 0 and compliance = 0; a row held by a spring of compliance c about a target jump: an
+// interior-point crossover's row it cannot classify), or a given force, r_row + coupling · r_N = force
 // (open: 0; a Tresca slide: ±s; a Coulomb slide: coupling ±f, force 0).
 struct RowCondition {
   bool jump = false;
-  double force = 0;     // daN
-  double coupling = 0;  // on the node's r_N (tangential rows only)
+  double force = 0;       // daN on a force row; the target jump (mm) on a jump row
+  double coupling = 0;    // on the node's r_N (tangential rows only)
+  double compliance = 0;  // mm/daN, added to the law's on a jump row
 };
 
 class MixedSystem {

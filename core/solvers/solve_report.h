@@ -48,6 +48,11 @@ struct SolveReport {
   std::string message;          // why it stopped, in one line
 };
 
+// Which method solves a problem with a layer band (the thin-layer mode). InteriorPoint: the primal-dual
+// interior-point method of core/solvers/layer_interior_point.h, the floating-layer ladder
+// (core/solvers/floating_layer.h) taking over where it stops short; Ladder: the ladder alone.
+enum class LayerMethod { InteriorPoint, Ladder };
+
 struct SolverOptions {
   double tolerance = 1e-10;     // on Residual::value()
   int max_iterations = 0;       // 0: the solver's default
@@ -78,6 +83,8 @@ struct SolverOptions {
   // Fast solver only: a body held by contact and friction alone and no layer band takes the sparse
   // Newton first (core/solvers/sparse_newton.h). Off only to measure the condensed path against it.
   bool sparse_newton = true;
+  // Fast solver only: the method of a problem with a layer band (LayerMethod above).
+  LayerMethod layer_method = LayerMethod::InteriorPoint;
 };
 
 }  // namespace thinlayer
