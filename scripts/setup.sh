@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages thinlayer needs (only those missing), then configures and
-# builds it in Release under build/. Safe to run again: it does only what is left to do.
+# builds the command line (build/thinlayer, Release) — all the main job runs; scripts/test.sh builds
+# the rest (the tests, the benchmark drivers). Safe to run again: it does only what is left to do.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,4 +21,4 @@ if ((${#missing[@]})); then
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j "$(nproc)"
+cmake --build build -j "$(nproc)" --target thinlayer
