@@ -15,7 +15,6 @@ import json
 import os
 import shutil
 import signal
-import stat
 import subprocess
 import sys
 import tempfile
@@ -24,6 +23,7 @@ import time
 import h5py
 import numpy as np
 
+from input_matrix import snapshot
 from process_session import run_in_session
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -34,23 +34,6 @@ THINLAYER = None
 failures = []
 passed = 0
 folders = []  # every folder this script made, removed at the end
-
-
-def snapshot(folder):
-    """Every entry under folder: its kind and, for a regular file, its bytes."""
-    result = {}
-    for root, dirs, files in os.walk(folder):
-        for name in dirs + files:
-            path = os.path.join(root, name)
-            info = os.lstat(path)
-            if stat.S_ISREG(info.st_mode):
-                with open(path, "rb") as content:
-                    result[os.path.relpath(path, folder)] = ("file", content.read())
-            elif stat.S_ISLNK(info.st_mode):
-                result[os.path.relpath(path, folder)] = ("link", os.readlink(path))
-            else:
-                result[os.path.relpath(path, folder)] = ("kind", stat.S_IFMT(info.st_mode))
-    return result
 
 
 def user_folder():

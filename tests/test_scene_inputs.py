@@ -18,7 +18,6 @@ import os
 import re
 import shutil
 import signal
-import stat
 import subprocess
 import sys
 import tempfile
@@ -26,6 +25,7 @@ import time
 
 import h5py
 
+from input_matrix import snapshot, two_quads_msh as msh
 from process_session import run_in_session, session_processes
 
 THINLAYER = os.path.abspath(sys.argv[1])
@@ -62,20 +62,6 @@ def scene(**changes):
     return s
 
 
-def snapshot(folder):
-    result = {}
-    for root, dirs, files in os.walk(folder):
-        for name in dirs + files:
-            path = os.path.join(root, name)
-            info = os.lstat(path)
-            if stat.S_ISREG(info.st_mode):
-                with open(path, "rb") as f:
-                    result[os.path.relpath(path, folder)] = f.read()
-            else:
-                result[os.path.relpath(path, folder)] = stat.S_IFMT(info.st_mode)
-    return result
-
-
 def check(name, ok, detail=""):
     global passed
     if ok:
@@ -109,32 +95,6 @@ def refused(name, args, expect_in_message, folder, max_seconds=None):
     if max_seconds is not None:
         check(name + " refused before it is spent", seconds < max_seconds, f"{seconds:.1f} s")
     print(f"case {name}: exit {r.returncode}, {lines[0] if lines else ''!r}")
-
-
-def msh(crack=False, concave=False):
-    """Two bodies of two quads each as a gmsh 4.1 mesh: a on y in [0, 1], b on [1, 2], the bondline
-    y = 1; with `crack`, b's last quad repeats a node; with `concave`, a's first quad is not convex."""
-    nodes = [(x, y) for y in (0, 1, 2) for x in (0, 1, 2)]  # tags 1..9, a row per curve
-    if concave:
-        nodes[1] = (0.2, 0.8)
-    last = "10 5 6 9 9" if crack else "10 5 6 9 8"
-    return "\n".join([
-        "$MeshFormat", "4.1 0 8", "$EndMeshFormat",
-        "$PhysicalNames", "5", '1 1 "bottom"', '1 2 "bond"', '1 3 "top"', '2 4 "a"', '2 5 "b"', "$EndPhysicalNames",
-        "$Entities", "0 3 2 0",
-        "1 0 0 0 2 0 0 1 1 0", "2 0 1 0 2 1 0 1 2 0", "3 0 2 0 2 2 0 1 3 0",
-        "1 0 0 0 2 1 0 1 4 0", "2 0 1 0 2 2 0 1 5 0", "$EndEntities",
-        "$Nodes", "3 9 1 9",
-        *[line for curve in range(3) for line in (f"1 {curve + 1} 0 3", *[str(3 * curve + k + 1) for k in range(3)],
-                                                  *[f"{x} {y} 0" for x, y in nodes[3 * curve:3 * curve + 3]])],
-        "$EndNodes",
-        "$Elements", "5 10 1 10",
-        "1 1 1 2", "1 1 2", "2 2 3",
-        "1 2 1 2", "3 4 5", "4 5 6",
-        "1 3 1 2", "5 7 8", "6 8 9",
-        "2 1 3 2", "7 1 2 5 4", "8 2 3 6 5",
-        "2 2 3 2", "9 4 5 8 7", last,
-        "$EndElements", ""])
 
 
 def hostile_scenes(folder, write):

@@ -21,7 +21,6 @@ import os
 import random
 import shutil
 import signal
-import stat
 import subprocess
 import sys
 import tempfile
@@ -29,6 +28,7 @@ import time
 
 import h5py
 
+from input_matrix import snapshot, two_quads_msh as msh
 from process_session import run_in_session, session_processes
 
 THINLAYER = os.path.abspath(sys.argv[1])
@@ -55,24 +55,6 @@ def check(name, ok, detail=""):
     else:
         failures.append(f"{name}: {detail}")
         print(f"FAIL {name}: {detail}")
-
-
-def snapshot(folder):
-    """Every entry under folder: its kind and, for a regular file, its bytes; a link, its target."""
-    result = {}
-    for root, dirs, files in os.walk(folder):
-        for name in dirs + files:
-            path = os.path.join(root, name)
-            info = os.lstat(path)
-            key = os.path.relpath(path, folder)
-            if stat.S_ISREG(info.st_mode):
-                with open(path, "rb") as f:
-                    result[key] = f.read()
-            elif stat.S_ISLNK(info.st_mode):
-                result[key] = ("link", os.readlink(path))
-            else:
-                result[key] = stat.S_IFMT(info.st_mode)
-    return result
 
 
 def run(argv, folder, timeout=300, limit_memory=None):
@@ -168,32 +150,6 @@ def case(name, args, status, words, folder, seconds, changes=(), report=False, l
     for leftover in os.listdir(TMP):
         shutil.rmtree(os.path.join(TMP, leftover), ignore_errors=True)
     return r
-
-
-def msh(z=0.0, first_node=None):
-    """Two bodies of two quads each as a gmsh 4.1 mesh (tests/test_scene_inputs.py's), z for every
-    node, and optionally node 1 at `first_node` (x, y) given as text."""
-    nodes = [(x, y) for y in (0, 1, 2) for x in (0, 1, 2)]
-    text = [f"{x} {y} {z}" for x, y in nodes]
-    if first_node:
-        text[0] = f"{first_node[0]} {first_node[1]} {z}"
-    return "\n".join([
-        "$MeshFormat", "4.1 0 8", "$EndMeshFormat",
-        "$PhysicalNames", "5", '1 1 "bottom"', '1 2 "bond"', '1 3 "top"', '2 4 "a"', '2 5 "b"', "$EndPhysicalNames",
-        "$Entities", "0 3 2 0",
-        "1 0 0 0 2 0 0 1 1 0", "2 0 1 0 2 1 0 1 2 0", "3 0 2 0 2 2 0 1 3 0",
-        "1 0 0 0 2 1 0 1 4 0", "2 0 1 0 2 2 0 1 5 0", "$EndEntities",
-        "$Nodes", "3 9 1 9",
-        *[line for curve in range(3) for line in (f"1 {curve + 1} 0 3", *[str(3 * curve + k + 1) for k in range(3)],
-                                                  *text[3 * curve:3 * curve + 3])],
-        "$EndNodes",
-        "$Elements", "5 10 1 10",
-        "1 1 1 2", "1 1 2", "2 2 3",
-        "1 2 1 2", "3 4 5", "4 5 6",
-        "1 3 1 2", "5 7 8", "6 8 9",
-        "2 1 3 2", "7 1 2 5 4", "8 2 3 6 5",
-        "2 2 3 2", "9 4 5 8 7", "10 5 6 9 8",
-        "$EndElements", ""])
 
 
 TWO_QUADS = {"name": "q", "bodies": {"a": {"group": "a", "lambda": 4500, "mu": 5400},
