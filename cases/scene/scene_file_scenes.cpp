@@ -229,6 +229,12 @@ LoadPath scene_load_path(const SceneFileBulk& bulk, const std::string& mode, dou
   return check_load_path(layer.model, layer.interfaces, force);
 }
 
+std::vector<FrictionHold> scene_friction_estimate(const SceneFileBulk& bulk, const std::string& mode, double eps) {
+  if (mode == "limit") return friction_estimate(bulk.model(), bulk.limit_interfaces(eps));
+  const SceneLayerModel layer = make_scene_layer_model(bulk.spec(), bulk.meshes(), bulk.interface_nodes(), eps);
+  return friction_estimate(layer.model, layer.interfaces);
+}
+
 const CondensedInterface& SceneFileBulk::condensed() {
   if (!condensed_) {
     const ContactProblem geometry(*system_, limit_interfaces(0, /*with_laws=*/false));

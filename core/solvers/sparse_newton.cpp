@@ -53,8 +53,8 @@ std::vector<std::array<int, 2>> floating_sides(const ContactProblem& problem) {
 bool holds(Active a) { return a == Active::Stick || a == Active::Bonded; }
 bool slides(Active a) { return a == Active::SlidePositive || a == Active::SlideNegative; }
 
-// A body held by friction alone, below what friction can hold (load_path.h refuses a load above
-// f x its normal force before the solve), keeps at least one stuck node at its solution: were every
+// A body held by friction alone, below what friction can hold (a load statics proves above it is
+// refused before the solve, cases/scene/load_path.h), keeps at least one stuck node at its solution: were every
 // node of its faces sliding, its friction forces f|r_N| would balance its load exactly — the
 // capacity. A guess that lets every node of such a body slide is therefore wrong, and it leaves the
 // body's translation along its faces free (a singular step: the Newton iterates of a double lap with

@@ -91,7 +91,6 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   SceneSolveInput in;
   std::vector<InputFile> inputs;
   std::unique_ptr<SceneFileBulk> bulk;
-  LoadPath load_path;
   try {
     in = parse_solve(command, args);
     RunPhase reading("reading the scene file " + in.scene);
@@ -109,12 +108,12 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     RunPhase meshing("meshing and checking the scene " + in.scene);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     check_scene_eps(*bulk, in.mode, in.eps);
-    // SPEC 1.3: a load with no path is bad input; a joint friction alone cannot hold fails (exit 1),
-    // both found before any solve.
-    load_path = scene_load_path(*bulk, in.mode, in.eps);
+    // SPEC 1.3: a load with no path is bad input; a joint that statics proves friction cannot hold
+    // fails (exit 1); both proven before any solve, nothing else refused.
+    const LoadPath load_path = scene_load_path(*bulk, in.mode, in.eps);
     if (!load_path.no_path.empty()) throw std::invalid_argument(load_path.no_path);
-    if (const FrictionHold* over = load_path.exceeded()) {
-      std::cerr << "thinlayer solve: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+    if (!load_path.friction_overload.empty()) {
+      std::cerr << "thinlayer solve: " << load_path.friction_overload << "; nothing solved\n";
       return 1;
     }
   } catch (const std::invalid_argument& e) {
@@ -157,8 +156,8 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (const std::string w = limit_slip_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!s.report.converged) {
       std::cerr << "thinlayer solve: " << s.report.message << "\n";
-      // What friction alone had to hold, where it did (the capacity was estimated within the load).
-      for (const FrictionHold& h : load_path.friction)
+      // What friction alone had to hold, where it did: an estimate that explains the failure.
+      for (const FrictionHold& h : scene_friction_estimate(*bulk, in.mode, in.eps))
         std::cerr << "thinlayer solve: " << friction_line(h, bulk->spec().units.force) << "\n";
       return 1;
     }
@@ -224,12 +223,12 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     RunPhase meshing("meshing and checking the scene " + scene);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     for (double e : scene_study_grid(*bulk, options)) check_layer_mode(*bulk, e);
-    // SPEC 1.3: a load with no path is bad input; a joint friction alone cannot hold fails (exit 1);
-    // judged on the limit mode (the glue's own thickness), before any of the study's solves.
+    // SPEC 1.3: a load with no path is bad input; a joint statics proves friction cannot hold fails
+    // (exit 1); judged on the limit mode (the glue's own thickness), before any of the study's solves.
     const LoadPath path = scene_load_path(*bulk, "limit", 0.0);
     if (!path.no_path.empty()) throw std::invalid_argument(path.no_path);
-    if (const FrictionHold* over = path.exceeded()) {
-      std::cerr << "thinlayer study: " << friction_line(*over, bulk->spec().units.force) << "; nothing solved\n";
+    if (!path.friction_overload.empty()) {
+      std::cerr << "thinlayer study: " << path.friction_overload << "; nothing solved\n";
       return 1;
     }
   } catch (const std::exception& e) {
