@@ -29,6 +29,7 @@ const std::map<std::string, std::string>& quantity_descriptions() {
 std::string verdict_text(const SceneValidityRow& v) {
   if (v.status == "at_least") return ">= " + sci(v.eps_max, 1);
   if (v.status == "below_range") return "< " + sci(v.eps_max, 1);
+  if (v.status == "not_judged") return "-";
   return sci(v.eps_max, 2);
 }
 
@@ -77,6 +78,7 @@ void print_scene_study(const SceneFileBulk& bulk, const SceneStudyResult& r, con
     for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", sci(s.e.at(q), 2).c_str());
     std::printf(" %5d %5d %9s %8.2f%s\n", s.status_diff, s.iterations, sci(s.residual, 1).c_str(), s.time_s,
                 s.converged ? "" : "  NOT converged");
+    if (!s.not_used.empty()) std::printf("    not used (its distances are not reported): %s\n", s.not_used.c_str());
   }
   print_fit_rows(scene_distance_quantities(), r.fit, r.floor_fit, 8, 10);
   std::printf("  (the verdict's quantities below: the reactions, u, and the peaks at d = %g mm from the bondline ends)\n",
@@ -112,6 +114,7 @@ void print_scene_floor(const SceneStudyResult& r) {
     std::printf("  %-8g %6d", row.h, row.S_nodes);
     for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", sci(row.e.at(q), 2).c_str());
     std::printf("%s\n", row.converged ? "" : "  NOT converged");
+    if (!row.not_used.empty()) std::printf("    not used (its distances are not reported): %s\n", row.not_used.c_str());
   }
   std::printf("  %-15s", "rate in h");
   for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", rate_text(r.floor_rate.at(q)).c_str());

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/solvers/stop_verdict.h"
 #include "studies/tools/limit_error_estimate.h"
 #include "studies/tools/scene_distance.h"
 
@@ -46,6 +47,11 @@ std::string case_letters(const std::vector<InterfaceLaw>& laws) {
   return s;
 }
 
+// "" where the solve converged; else "<which>: <why it stopped>; " (its message).
+std::string not_used_because(const SolveReport& report, const std::string& which) {
+  return report.converged ? "" : which + ": " + report.message + "; ";
+}
+
 bool same_law(const InterfaceLaw& a, const InterfaceLaw& b) {
   return a.lambda_bar == b.lambda_bar && a.mu_bar == b.mu_bar && a.bilateral == b.bilateral && a.friction == b.friction;
 }
@@ -74,9 +80,13 @@ MapCellLevel solve_level(const SceneFileBulk& meshed, const SceneSpec& spec, dou
     level.layer_residual = layer.report.residual.value();
     level.limit_residual = limit.report.residual.value();
     level.converged = layer.report.converged && limit.report.converged;
-    level.measured = distances(bulk, layer.record, limit.record, d);
-    if (limit.first_order.record) level.estimate = distances(bulk, *limit.first_order.record, limit.record, d);
-    if (limit.first_order.interior) level.interior = distances(bulk, *limit.first_order.interior, limit.record, d);
+    level.failure = not_used_because(layer.report, "layer mode") + not_used_because(limit.report, "finite law");
+    // One rule (core/solvers/stop_verdict.h): a distance only between answers whose numbers may be used.
+    if (usable(layer.report) && usable(limit.report)) {
+      level.measured = distances(bulk, layer.record, limit.record, d);
+      if (limit.first_order.record) level.estimate = distances(bulk, *limit.first_order.record, limit.record, d);
+      if (limit.first_order.interior) level.interior = distances(bulk, *limit.first_order.interior, limit.record, d);
+    }
     cell.law_case = case_letters(laws);
     std::vector<InterfaceLaw> rules;
     bool differs = false;
@@ -89,9 +99,12 @@ MapCellLevel solve_level(const SceneFileBulk& meshed, const SceneSpec& spec, dou
       const SceneFileScene classified = solve_scene_file_limit(bulk, SolverKind::Fast, options, t, default_status_tolerance, true);
       cell.rule_solved = true;
       cell.rule_converged = classified.report.converged && layer.report.converged;
+      cell.rule_failure = not_used_because(classified.report, "the rule's law") + not_used_because(layer.report, "layer mode");
       // Measured against the layer (the reference): the rule's law may carry nothing at all (a μ̄ = 0
-      // law on a joint loaded in shear), which no distance relative to its own answer could say.
-      cell.rule_measured = distances(bulk, classified.record, layer.record, d);
+      // law on a joint loaded in shear), which no distance relative to its own answer could say. Not
+      // where either answer is unusable (a μ̄ = 0 law on a force-loaded joint is singular).
+      if (usable(classified.report) && usable(layer.report))
+        cell.rule_measured = distances(bulk, classified.record, layer.record, d);
     }
   } catch (const std::exception& e) {
     level.failure = e.what();
