@@ -179,8 +179,14 @@ void run_validity(SceneFileBulk& bulk, const SceneFileScene* shared_limit, const
       // (a distance that dips back under τ above a sample beyond it is no validity range).
       int within = -1;
       while (within + 1 < static_cast<int>(by_eps.size()) && by_eps[within + 1].verdict.at(q) <= tau) ++within;
+      const bool judged = std::any_of(by_eps.begin(), by_eps.end(), [&](const SceneSample& s) { return !std::isnan(s.verdict.at(q)); });
       if (by_eps.empty()) {
-        j.row.status = "not_judged";  // no sample's numbers may be used
+        j.row.status = "not_judged";
+        j.row.why_not_judged = "no sample's numbers may be used (none converged nor stopped at a proven floor)";
+      } else if (!judged) {  // every reaction component is fixed by statics (scene_distance.h)
+        j.row.status = "not_judged";
+        j.row.why_not_judged = "statically determinate (" + determinate_reactions(reaction_components(bulk.model())) +
+                               "): the same in every model";
       } else if (within + 1 == static_cast<int>(by_eps.size())) {
         j.row.status = "at_least";
         j.row.eps_max = by_eps.back().eps;

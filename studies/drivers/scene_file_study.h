@@ -72,6 +72,7 @@ struct SceneValidityRow {
   double eps_max = 0, error_at_eps_max = 0, eps_beyond = 0;
   int bisection_steps = 0;
   bool converged = true;
+  std::string why_not_judged;  // status not_judged: why (statically determinate, or no usable sample)
 };
 
 // The mesh floor at one element size along the bondlines.

@@ -122,10 +122,11 @@ void print_scene_floor(const SceneStudyResult& r) {
 }
 
 std::string verdict_label(const std::string& q, double d) {
-  if (q == "reactions") return "reactions";
+  if (q == "reactions") return "reactions (those that can differ, each)";
   if (q == "u") return "adherents' displacements";
-  if (q == "peel_at_d") return "peak peel at " + plain(d) + " mm from the ends";
-  if (q == "shear_at_d") return "peak shear at " + plain(d) + " mm from the ends";
+  // On the quantity's scale on the bondlines (scene_distance.h), never pointwise.
+  if (q == "peel_at_d") return "peel at " + plain(d) + " mm from the ends, on max|sigma_N|";
+  if (q == "shear_at_d") return "shear at " + plain(d) + " mm from the ends, on max|sigma_T|";
   return q;
 }
 
@@ -154,8 +155,17 @@ void print_scene_ends(const SceneStudyResult& r) {
       std::printf("  %s: P = %.4g, overlap %.4g mm; peak shear Volkersen %.4g", c.bondline.empty() ? "S" : c.bondline.c_str(), c.P,
                   c.length, peak(c.volkersen_shear));
       if (!c.gr_shear.empty())
-        std::printf(", Goland-Reissner %.4g (k %.3g), peak peel Goland-Reissner %.4g", peak(c.gr_shear), c.k,
-                    *std::max_element(c.gr_peel.begin(), c.gr_peel.end()));
+        std::printf(", Goland-Reissner %.4g, peak peel Goland-Reissner %.4g\n    Goland-Reissner's bending factor from "
+                    "linear statics of the joint's supports: k %.3g (%.3g at s = 0, %.3g at its far end%s; k' %.3g); "
+                    "GR's own geometrically nonlinear k at this P, %.3g, is not the linear model's",
+                    peak(c.gr_shear), *std::max_element(c.gr_peel.begin(), c.gr_peel.end()), c.k, c.k_ends[0], c.k_ends[1],
+                    std::abs(c.k_ends[0] - c.k_ends[1]) > 0.01 * std::abs(c.k)
+                        ? ": the supports are not symmetric, the closed form draws their mean"
+                        : "",
+                    c.k_prime, c.k_nonlinear);
+      else if (!c.gr_why_not.empty())
+        std::printf("\n    %s", c.gr_why_not.c_str());
+      if (!c.start.empty()) std::printf("\n    s = 0 at %s; s = %.4g mm at %s", c.start.c_str(), c.length, c.end.c_str());
       std::printf("\n");
     }
     std::printf("  computed at eps %g mm (the corners): shear limit %.4g, layer %.4g; peel limit %.4g, layer %.4g\n",
@@ -187,14 +197,18 @@ void print_scene_validity(const SceneStudyResult& r, int steps) {
     bool converged = true;
     for (const SceneValidityRow& v : r.validity) {
       if (v.quantity != q) continue;
+      if (v.status == "not_judged") {
+        line = "not judged: " + v.why_not_judged;
+        continue;
+      }
       line += (line.empty() ? "" : "; ") + std::string("within ") + plain(100 * v.tau) + " % up to eps " + verdict_text(v) +
               " (" + sci(v.error_at_eps_max, 1) + ")";
       converged = converged && v.converged;
     }
-    std::printf("  %-40s %s%s\n", (verdict_label(q, r.peak_distance) + ":").c_str(), line.c_str(),
+    std::printf("  %-48s %s%s\n", (verdict_label(q, r.peak_distance) + ":").c_str(), line.c_str(),
                 converged ? "" : "  (a scene did not converge)");
     if (!r.floor.empty())  // the same distance on the finer meshes: where it moves, the verdict measures the mesh too
-      std::printf("  %-40s at eps %g mm: %s at h %g mm, %s at h %g mm\n", "", r.floor.front().eps,
+      std::printf("  %-48s at eps %g mm: %s at h %g mm, %s at h %g mm\n", "", r.floor.front().eps,
                   sci(r.floor.front().verdict.at(q), 2).c_str(), r.floor.front().h, sci(r.floor.back().verdict.at(q), 2).c_str(),
                   r.floor.back().h);
   }
