@@ -3,6 +3,7 @@
 #include "cases/answer_admissibility.h"
 #include "cases/film_admissibility.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -23,6 +24,7 @@
 #include "studies/drivers/scene_solve_output.h"
 #include "studies/parallel/process_group.h"
 #include "studies/tools/format.h"
+#include "studies/tools/scene_distance.h"
 
 namespace thinlayer {
 
@@ -138,7 +140,11 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (in.mode == "limit") cost = classification_cost(*bulk, s, in.eps, in.options);
     if (!in.json) print_scene_solve(*bulk, in.mode, in.eps, s);
     if (!in.json && cost.differs) std::printf("  %s\n", classification_cost_line(*bulk, s, cost).c_str());
-    if (!in.json && estimate) print_limit_error_estimate(*estimate);
+    if (!in.json && estimate) {
+      const std::vector<ReactionComponent> reactions = reaction_components(bulk->model());
+      const bool fixed = std::all_of(reactions.begin(), reactions.end(), [](const ReactionComponent& c) { return c.determinate; });
+      print_limit_error_estimate(*estimate, fixed ? determinate_reactions(reactions) : "");
+    }
     phase.emplace("writing " + in.out);
     if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force}, estimate ? &*estimate : nullptr);
     phase.emplace("writing " + in.vtu);
@@ -153,6 +159,7 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (const std::string w = no_load_warning(s); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (const std::string w = film_warning(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (const std::string w = displacement_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
+    if (const std::string w = strain_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (const std::string w = limit_slip_warning_line(s.record); !w.empty()) std::cerr << "thinlayer solve: " << w << "\n";
     if (!s.report.converged) {
       std::cerr << "thinlayer solve: " << s.report.message << "\n";
@@ -223,6 +230,7 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     RunPhase meshing("meshing and checking the scene " + scene);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     for (double e : scene_study_grid(*bulk, options)) check_layer_mode(*bulk, e);
+    if (options.peak_distance > 0) check_peak_distance(*bulk, options.peak_distance);  // within half a bondline
     // SPEC 1.3: a load with no path is bad input; a joint statics proves friction cannot hold fails
     // (exit 1); judged on the limit mode (the glue's own thickness), before any of the study's solves.
     const LoadPath path = scene_load_path(*bulk, "limit", 0.0);
