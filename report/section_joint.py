@@ -276,9 +276,15 @@ def closed_forms(study, bname):
     if "volkersen_shear" in g:
         curves["shear"]["Volkersen (shear lag)"] = array(g, "volkersen_shear")
     if "goland_reissner_shear" in g:
-        curves["shear"]["Goland–Reissner (with bending)"] = array(g, "goland_reissner_shear")
-        curves["peel"]["Goland–Reissner (with bending)"] = array(g, "goland_reissner_peel")
-    return array(g, "s"), curves, attr(cf, "joint", "")
+        # Its bending factor is the linear statics' of the joint's own supports (the model is linear);
+        # one k for both ends: where the supports are not symmetric the label says the mean is drawn.
+        k0, k1 = attr(g, "k_start"), attr(g, "k_end")
+        asymmetric = k0 is not None and k1 is not None and abs(k0 - k1) > 0.01 * abs(attr(g, "k", 1.0))
+        label = (f"Goland–Reissner, linear k = {attr(g, 'k'):.3g}"
+                 + (f" (ends {k0:.3g} / {k1:.3g}: symmetric form, their mean)" if asymmetric else ""))
+        curves["shear"][label] = array(g, "goland_reissner_shear")
+        curves["peel"][label] = array(g, "goland_reissner_peel")
+    return array(g, "s"), curves, attr(cf, "joint", ""), (attr(g, "start", ""), attr(g, "end", ""))
 
 
 def chosen_samples(pairs, nominal):
@@ -311,7 +317,7 @@ def bondline_figures(ctx, study, name, pairs, nominal):
                         label="layer: minus face")
                 ax.plot(lim.s, getattr(lim, "sigma_" + q), "--", color="k", lw=1.2, label="limit law at this ε")
                 if forms is not None and i == nominal:
-                    s_cf, curves, _ = forms
+                    s_cf, curves, _, _ = forms
                     for (cname, values), style in zip(curves["peel" if q == "N" else "shear"].items(), (":", "-.")):
                         ax.plot(s_cf, values, style, color="#2ca02c" if "Volkersen" in cname else "#9467bd", lw=1.5,
                                 label=cname)
@@ -320,7 +326,9 @@ def bondline_figures(ctx, study, name, pairs, nominal):
                 ax.set_title(f"ε = {mm(eps)} mm" + (" (the glue's own)" if i == nominal else ""), fontsize=9)
                 ax.autoscale(axis="y")
                 if row == 1:
-                    ax.set_xlabel("arc length s along the bondline (mm)")
+                    ends = forms[3] if forms is not None else ("", "")
+                    ax.set_xlabel("arc length s along the bondline (mm)" +
+                                  (f"\ns = 0: {ends[0]}\nfar end: {ends[1]}" if ends[0] else ""), fontsize=8)
             axes[0, col].legend(fontsize=6.5, loc="best")
             if forms is not None and i == nominal:
                 axes[1, col].legend(fontsize=6.5, loc="best")
@@ -344,13 +352,19 @@ def bondline_figures(ctx, study, name, pairs, nominal):
             rows = []
             for key in cf:
                 g = cf[key]
+                linear = attr(g, "k") is not None
                 rows.append([esc(key), num(attr(g, "P"), 4), num(attr(g, "overlap"), 4), num(attr(g, "t_1"), 3),
                              num(attr(g, "t_2"), 3), num(attr(g, "omega"), 4),
-                             num(attr(g, "k"), 3) if attr(g, "k") is not None else "—",
+                             (f"{num(attr(g, 'k'), 3)} (ends {num(attr(g, 'k_start'), 3)} / {num(attr(g, 'k_end'), 3)})"
+                              if linear else esc(attr(g, "goland_reissner_why_not", "") or "—")),
+                             num(attr(g, "k_nonlinear"), 3) if linear else "—",
                              num(attr(g, "lambda"), 3) if attr(g, "lambda") is not None else "—"])
-            out.append(f"<p>Closed forms ({esc(attr(cf, 'joint'))}): {esc(attr(cf, 'assumptions', ''))}.</p>" +
+            out.append(f"<p>Closed forms ({esc(attr(cf, 'joint'))}): {esc(attr(cf, 'assumptions', ''))}. The bending "
+                       "factor drawn is the linear statics' of this joint's supports, at either end of the overlap; "
+                       "Goland–Reissner's own k (geometrically nonlinear, for symmetric pinned ends) changes with the "
+                       "load and is not the linear model's: shown second, not drawn.</p>" +
                        table(["bondline", "P (force/mm)", "overlap (mm)", "t₁ (mm)", "t₂ (mm)", "ω (1/mm)",
-                              "k (bending)", "λ (peel)"], rows, css_class="small"))
+                              "k, linear (ends)", "GR's nonlinear k at P", "λ (peel)"], rows, css_class="small"))
         elif attr(cf, "why_not"):
             out.append(f"<p>No classical closed form drawn: {esc(attr(cf, 'why_not'))}.</p>")
     return "\n".join(out)

@@ -341,9 +341,16 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
         r.text["layer_quadrature"] = quadrature_name(band.selective_integration);
         r.numbers["layer_min_angle_deg"] = layer.layer_quality[i].min_angle_deg;
         r.numbers["layer_max_aspect_ratio"] = layer.layer_quality[i].max_aspect_ratio;
-        scene.layer_quality = layer.layer_quality[i];
         first_layer = false;
       }
+      // What `solve` prints: every layer's cells together, the worst angles and aspect ratio of all.
+      const MeshQuality& q = layer.layer_quality[i];
+      MeshQuality& all = scene.layer_quality;
+      all.min_angle_deg = all.cells ? std::min(all.min_angle_deg, q.min_angle_deg) : q.min_angle_deg;
+      all.max_angle_deg = all.cells ? std::max(all.max_angle_deg, q.max_angle_deg) : q.max_angle_deg;
+      all.max_aspect_ratio = std::max(all.max_aspect_ratio, q.max_aspect_ratio);
+      all.min_scaled_jacobian = all.cells ? std::min(all.min_scaled_jacobian, q.min_scaled_jacobian) : q.min_scaled_jacobian;
+      all.cells += q.cells;
       k += 2;
     }
     r.combined_status.insert(r.combined_status.end(), b.status.begin(), b.status.end());

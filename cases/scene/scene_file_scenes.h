@@ -95,7 +95,7 @@ struct SceneFileScene {
   SolveReport report;
   StatusCount limit;          // limit mode: counts over every bondline
   LayerCounts counts;         // layer mode: per face and combined, over every layer bondline
-  MeshQuality layer_quality;  // layer mode: the first layer's
+  MeshQuality layer_quality;  // layer mode: every layer's together (cells summed, the worst angles and ratio)
   std::vector<SceneBondline> bondlines;
   std::map<std::string, Eigen::Vector2d> loads;  // each load group's resultant force (force unit per mm)
   // false: every bondline node is open (SPEC §5), or the bondlines carry next to nothing — under
