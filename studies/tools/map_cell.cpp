@@ -16,10 +16,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The verdict's quantities at d and S2's stress norms, of `record` against `limit`.
+// The verdict's quantities at d and S2's stress norms, of `record` against `limit`. The reactions
+// as S6's estimate measures them (one vector, reaction_distance), so that the map compares like with
+// like; NaN (not judged) where statics fixes every component (reaction_components): their distance
+// is round-off, no estimate is judged on it.
 std::map<std::string, double> distances(const SceneFileBulk& bulk, const SceneRecord& record, const SceneRecord& limit,
                                         double d) {
   std::map<std::string, double> e = verdict_distance(bulk, record, limit, d);
+  bool fixed = true;
+  for (const ReactionComponent& c : reaction_components(bulk.model())) fixed = fixed && c.determinate;
+  e["reactions"] = fixed ? std::nan("") : reaction_distance(record, limit);
   const std::map<std::string, double> s2 = scene_distance(bulk, record, limit);
   e["sigma_N"] = s2.at("sigma_N");
   e["sigma_T"] = s2.at("sigma_T");
