@@ -159,6 +159,7 @@ def verdict_block(study, pairs):
     tau, eps_max, status = array(v, "tau"), array(v, "eps_max"), strings(v["status"])
     error = array(v, "error_at_eps_max")
     quantity = strings(v["quantity"]) if "quantity" in v else ["u"] * len(tau)
+    why_not = strings(v["why_not_judged"]) if "why_not_judged" in v else [""] * len(tau)
     floor = study.get("floor")
     lines = []
     for q in dict.fromkeys(quantity):
@@ -169,10 +170,13 @@ def verdict_block(study, pairs):
             value = {"found": f"up to ε = <b>{eps_max[i]:.3g} mm</b>",
                      "at_least": f"at every sampled ε, up to at least <b>{eps_max[i]:.3g} mm</b>",
                      "below_range": f"at no sampled ε (not even {eps_max[i]:.3g} mm)"}.get(status[i], esc(status[i]))
+            if status[i] == "not_judged":  # one reason for the quantity, not one per tau
+                parts = [f"not judged: {esc(why_not[i])}"]
+                continue
             parts.append(f"within {tau[i] * 100:g} % {value} ({error[i]:.2g})")
         label = VERDICT_LABELS.get(q, q).replace("at d", f"at d = {mm(d)} mm" if d is not None else "at d")
         mesh = ""
-        if floor is not None and ("verdict_" + q) in floor:
+        if floor is not None and ("verdict_" + q) in floor and np.isfinite(array(floor, "verdict_" + q)).any():
             h, e = array(floor, "h"), array(floor, "verdict_" + q)
             mesh = (f"<br><small>on the mesh, at ε = {mm(array(floor, 'eps')[0])} mm: "
                     + ", ".join(f"{e[k]:.2g} at h = {num(h[k])} mm" for k in range(len(h))) + "</small>")
@@ -184,7 +188,9 @@ def verdict_block(study, pairs):
             "(the distance there in brackets), and below it the same distance at the glue's own thickness on the "
             "study's mesh refined twice: where it moves, the verdict measures the mesh as well. A peak at d is resolved "
             "by the mesh only where d spans a few elements and the thinner lines' end zones (they shrink with ε): a "
-            "peak 'at no sampled ε' may be the mesh's at the thinnest ε — refine mesh_size.interface to tell.</p><ul>"
+            "peak 'at no sampled ε' may be the mesh's at the thinnest ε — refine mesh_size.interface to tell. What is "
+            "judged: each reaction component statics does not fix, on its own size; a peak at d as |layer − law| over the "
+            "law's largest |σ_N| (peel) or |σ_T| (shear) on the bondlines, never a pointwise ratio.</p><ul>"
             + "".join(lines) + "</ul>")
     if d is not None:
         text += (f"<p>d = {mm(d)} mm: {esc(attr(study, 'peak_distance_description', ''))}.</p>")

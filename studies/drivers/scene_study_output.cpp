@@ -1,5 +1,6 @@
 #include "studies/drivers/scene_study_output.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -207,7 +208,7 @@ void print_scene_validity(const SceneStudyResult& r, int steps) {
     }
     std::printf("  %-48s %s%s\n", (verdict_label(q, r.peak_distance) + ":").c_str(), line.c_str(),
                 converged ? "" : "  (a scene did not converge)");
-    if (!r.floor.empty())  // the same distance on the finer meshes: where it moves, the verdict measures the mesh too
+    if (!r.floor.empty() && !std::isnan(r.floor.front().verdict.at(q)))  // the same distance on the finer meshes: where it moves, the verdict measures the mesh too
       std::printf("  %-48s at eps %g mm: %s at h %g mm, %s at h %g mm\n", "", r.floor.front().eps,
                   sci(r.floor.front().verdict.at(q), 2).c_str(), r.floor.front().h, sci(r.floor.back().verdict.at(q), 2).c_str(),
                   r.floor.back().h);
@@ -455,12 +456,13 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
   if (!r.validity.empty()) {
     const std::string v = g + "/validity";
     std::vector<double> tau, eps_max, error, beyond;
-    std::vector<std::string> status, quantity;
+    std::vector<std::string> status, quantity, why_not;
     std::vector<int> steps, vconv;
     for (const SceneValidityRow& row : r.validity) {
       quantity.push_back(row.quantity);
       tau.push_back(row.tau);
       status.push_back(row.status);
+      why_not.push_back(row.why_not_judged);
       eps_max.push_back(row.eps_max);
       error.push_back(row.error_at_eps_max);
       beyond.push_back(row.eps_beyond);
@@ -471,7 +473,9 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
                                                "peel_at_d, shear_at_d (the peaks at peak_distance from the ends)");
     out.described_dataset(v + "/tau", tau, "1 (relative)", "the tolerance on the quantity's distance");
     out.described_dataset(v + "/status", status, "", "found: by bisection; at_least: within tau at every sample (a lower bound); "
-                                          "below_range: not within tau even at the thinnest sample");
+                                          "below_range: not within tau even at the thinnest sample; not_judged: see why_not_judged");
+    out.described_dataset(v + "/why_not_judged", why_not, "", "status not_judged: why (statically determinate, or no usable "
+                                                  "sample); else empty");
     out.described_dataset(v + "/eps_max", eps_max, "mm", "the largest eps at which the limit law stays within tau (the quantity)");
     out.described_dataset(v + "/error_at_eps_max", error, "1 (relative)", "the quantity's distance at eps_max");
     out.described_dataset(v + "/eps_beyond", beyond, "mm", "the smallest eps known beyond tau (status found)");
