@@ -15,21 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "tests/scene_folder.h"
-#include "tests/text_file.h"
+#include "tests/edited_case.h"
 
 namespace {
 
-const std::string lap_dir = std::string(THINLAYER_CASES_DIR) + "/single_lap/";
-
 std::string lap_with(const SceneFolder& f, const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::string json = read_text_file(lap_dir + "single_lap.json");
-  for (const auto& [from, to] : edits) {
-    EXPECT_NE(json.find(from), std::string::npos) << from;
-    json.replace(json.find(from), from.size(), to);
-  }
-  f.write("single_lap.geo", read_text_file(lap_dir + "single_lap.geo"));
-  return f.write("scene.json", json);
+  return edited_case(f, "single_lap", edits);
 }
 
 std::string aluminium_pulled(const SceneFolder& f, double force) {

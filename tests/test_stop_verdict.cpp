@@ -16,24 +16,15 @@
 
 #include "cases/scene/scene_file_scenes.h"
 #include "core/solvers/stop_verdict.h"
-#include "tests/scene_folder.h"
-#include "tests/text_file.h"
+#include "tests/edited_case.h"
 
 using namespace thinlayer;
 
 namespace {
 
-const std::string lap_dir = std::string(THINLAYER_CASES_DIR) + "/single_lap/";
-
-// The shipped single lap in a folder of the test's, with each (from, to) replaced in its JSON.
+// The shipped single lap with each (from, to) replaced in its JSON.
 std::string lap_with(const SceneFolder& f, const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::string json = read_text_file(lap_dir + "single_lap.json");
-  for (const auto& [from, to] : edits) {
-    EXPECT_NE(json.find(from), std::string::npos) << from;
-    json.replace(json.find(from), from.size(), to);
-  }
-  f.write("single_lap.geo", read_text_file(lap_dir + "single_lap.geo"));
-  return f.write("scene.json", json);
+  return edited_case(f, "single_lap", edits);
 }
 
 const std::pair<std::string, std::string> fine_mesh{"\"interface\": 0.25", "\"interface\": 0.025"};

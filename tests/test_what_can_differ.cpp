@@ -25,7 +25,7 @@
 #include "cases/scene/scene_file_scenes.h"
 #include "studies/tools/bondline_fields.h"
 #include "studies/tools/scene_distance.h"
-#include "tests/scene_folder.h"
+#include "tests/edited_case.h"
 #include "tests/text_file.h"
 
 using namespace thinlayer;
@@ -35,15 +35,10 @@ namespace {
 const std::string lap = std::string(THINLAYER_CASES_DIR) + "/single_lap/single_lap.json";
 
 std::string force_loaded(const SceneFolder& f) {
-  const std::string dir = std::string(THINLAYER_CASES_DIR) + "/single_lap/";
-  std::string json = read_text_file(dir + "single_lap.json");
-  const std::string supports = "\"supports\": [{\"group\": \"clamp\", \"u\": [0, 0]}, {\"group\": \"grip\", \"u\": [0.01, 0]}]";
-  EXPECT_NE(json.find(supports), std::string::npos);
-  json.replace(json.find(supports), supports.size(),
-               "\"supports\": [{\"group\": \"clamp\", \"u\": [0, 0]}, {\"group\": \"grip\", \"u\": [null, 0]}],\n"
-               "  \"loads\": [{\"group\": \"grip\", \"force\": [100, 0]}]");
-  f.write("single_lap.geo", read_text_file(dir + "single_lap.geo"));
-  return f.write("scene.json", json);
+  return edited_case(f, "single_lap",
+                     {{"\"supports\": [{\"group\": \"clamp\", \"u\": [0, 0]}, {\"group\": \"grip\", \"u\": [0.01, 0]}]",
+                       "\"supports\": [{\"group\": \"clamp\", \"u\": [0, 0]}, {\"group\": \"grip\", \"u\": [null, 0]}],\n"
+                       "  \"loads\": [{\"group\": \"grip\", \"force\": [100, 0]}]"}});
 }
 
 std::map<std::string, bool> determinate(const Model& model) {
