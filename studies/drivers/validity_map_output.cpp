@@ -78,15 +78,19 @@ void print_validity_map(const ValidityMapResult& r, const ValidityMapOptions& o)
     std::printf("    %-11s within a factor %s at %d of %d resolved cells\n", q.c_str(), plain(o.factor).c_str(), within, resolved);
   }
   // The paper's rule.
-  int degenerate = 0;
+  int degenerate = 0, measured = 0;
   double worst = 0;
   for (const MapCell& c : r.cells)
     if (c.rule_solved) {
       ++degenerate;
-      if (c.rule_measured.count("u")) worst = std::max(worst, c.rule_measured.at("u"));
+      if (c.rule_measured.count("u")) worst = std::max(worst, c.rule_measured.at("u")), ++measured;
     }
-  std::printf("\n  The paper's 3 %% / 30x rule picks a 0 or inf law at %d of %zu cells (its law against the layer: u up to %s %%)\n",
-              degenerate, r.cells.size(), significant(100 * worst, 3).c_str());
+  // Only the cells whose rule's answer is usable give a distance (none: none is claimed).
+  const std::string cost = measured == 0 ? "no usable answer of its law"
+                                         : "its law against the layer: u up to " + significant(100 * worst, 3) + " % at " +
+                                               std::to_string(measured) + " of them";
+  std::printf("\n  The paper's 3 %% / 30x rule picks a 0 or inf law at %d of %zu cells (%s)\n", degenerate, r.cells.size(),
+              cost.c_str());
   for (const MapCell& c : r.cells)
     if (c.rule_solved && !c.rule_measured.count("u"))
       std::printf("    no distance at t/L %s, E_g/E_a %s, nu_g %s: %s\n", sci(c.spec.t_over_L, 1).c_str(),
