@@ -32,6 +32,12 @@ AnswerAdmissibility answer_admissibility(const SceneRecord& r) {
       u_max[b] = std::max(u_max[b], r.u.row(node).norm());
     }
   }
+  for (Eigen::Index c = 0; c < r.cells.rows(); ++c) {
+    const std::string& body = r.body_names.at(r.cell_body.at(c));
+    if (is_layer(body)) continue;
+    const double strain = principal_strain(r, static_cast<int>(c));
+    if (strain > a.strain_max) a.strain_max = strain, a.strain_body = body;
+  }
   for (std::size_t b = 0; b < bodies; ++b) {
     if (is_layer(r.body_names[b]) || !(hi[b].x() >= lo[b].x())) continue;
     const double size = (hi[b] - lo[b]).maxCoeff();
@@ -61,6 +67,8 @@ void record_answer_admissibility(SceneRecord& r) {
   r.text["displacement_body"] = a.body;
   r.numbers["displacement_max"] = a.displacement;
   r.numbers["displacement_body_size"] = a.size;
+  r.numbers["strain_max"] = a.strain_max;
+  r.text["strain_body"] = a.strain_body;
   if (a.limit) {
     r.numbers["slip_over_h"] = a.slip_over_h;
     r.text["slip_where"] = a.slip_where;
@@ -69,13 +77,44 @@ void record_answer_admissibility(SceneRecord& r) {
 
 std::string displacement_warning_line(const SceneRecord& r) {
   if (!r.numbers.count("displacement_over_size") || r.numbers.at("displacement_over_size") <= displacement_warning) return "";
-  char buf[400];
+  const double moves = r.numbers.at("displacement_over_size");
+  const double strain = r.numbers.count("strain_max") ? r.numbers.at("strain_max") : 0.0;
+  char buf[600];
   std::snprintf(buf, sizeof buf,
                 "warning: body '%s' moves %.3g mm, %.3g times its size (%.3g mm): the model is linear and assumes small "
-                "displacements (warned above %g %% of a body's size); hold the joint as it is held (a support left free?)",
-                r.text.at("displacement_body").c_str(), r.numbers.at("displacement_max"),
-                r.numbers.at("displacement_over_size"), r.numbers.at("displacement_body_size"), 100 * displacement_warning);
-  return buf;
+                "displacements (warned above %g %% of a body's size)",
+                r.text.at("displacement_body").c_str(), r.numbers.at("displacement_max"), moves,
+                r.numbers.at("displacement_body_size"), 100 * displacement_warning);
+  std::string line = buf;
+  if (moves >= mechanism_ratio * strain) {  // a soft motion, not a large load: near-singular for it
+    std::snprintf(buf, sizeof buf,
+                  "; it moves %.3g times more than it strains (largest strain %.3g): a motion held by little, a rigid "
+                  "one or a bending — hold the joint as it is held (a support left free?)",
+                  strain > 0 ? moves / strain : INFINITY, strain);
+    line += buf;
+  }
+  return line;
+}
+
+std::string strain_warning_line(const SceneRecord& r) {
+  const double adherent = r.numbers.count("strain_max") ? r.numbers.at("strain_max") : 0.0;
+  const double glue = r.numbers.count("glue_strain_max") ? r.numbers.at("glue_strain_max") : 0.0;
+  if (adherent <= small_strain_warning && glue <= small_strain_warning) return "";
+  std::string where;
+  char buf[200];
+  if (glue > small_strain_warning) {
+    std::snprintf(buf, sizeof buf, "the glue strains %.3g", glue);
+    where = buf;
+  }
+  if (adherent > small_strain_warning) {
+    std::snprintf(buf, sizeof buf, "%sbody '%s' strains %.3g", where.empty() ? "" : " and ",
+                  r.text.count("strain_body") ? r.text.at("strain_body").c_str() : "-", adherent);
+    where += buf;
+  }
+  std::snprintf(buf, sizeof buf, " at its peak (largest principal strain): the load is beyond small strain (warned above %g); "
+                "the model is linear, its answer that of a linear model at this load, not the joint's",
+                small_strain_warning);
+  return "warning: " + where + buf;
 }
 
 std::string limit_slip_warning_line(const SceneRecord& r) {

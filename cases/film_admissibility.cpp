@@ -31,25 +31,30 @@ Eigen::VectorXd element_sizes_along(const InterfaceFields& f) {
   return h;
 }
 
-namespace {
-
-// The largest |principal strain| of a Q1 cell at its centre.
 double principal_strain(const SceneRecord& r, int cell) {
-  Coords4 xy;
-  Eigen::Matrix<double, 8, 1> ue;
-  for (int a = 0; a < 4; ++a) {
-    const int node = r.cells(cell, a);
-    xy.row(a) = r.nodes.row(node);
-    ue.segment<2>(2 * a) = r.u.row(node).transpose();
+  Eigen::Vector3d e;  // ε11, ε22, γ12
+  if (r.cells.cols() == 4 && r.cells(cell, 3) >= 0) {
+    Coords4 xy;
+    Eigen::Matrix<double, 8, 1> ue;
+    for (int a = 0; a < 4; ++a) {
+      const int node = r.cells(cell, a);
+      xy.row(a) = r.nodes.row(node);
+      ue.segment<2>(2 * a) = r.u.row(node).transpose();
+    }
+    double detJ = 0;
+    e = q1_strain_matrix(xy, 0.0, 0.0, detJ) * ue;
+  } else {  // a P1 triangle: its gradient is constant
+    const int a = r.cells(cell, 0), b = r.cells(cell, 1), c = r.cells(cell, 2);
+    Eigen::Matrix2d X, U;
+    X << (r.nodes.row(b) - r.nodes.row(a)).transpose(), (r.nodes.row(c) - r.nodes.row(a)).transpose();
+    U << (r.u.row(b) - r.u.row(a)).transpose(), (r.u.row(c) - r.u.row(a)).transpose();
+    const Eigen::Matrix2d grad = U * X.inverse();  // ∂u_i/∂x_j
+    e << grad(0, 0), grad(1, 1), grad(0, 1) + grad(1, 0);
   }
-  double detJ = 0;
-  const Eigen::Vector3d e = q1_strain_matrix(xy, 0.0, 0.0, detJ) * ue;  // ε11, ε22, γ12
   Eigen::Matrix2d tensor;
   tensor << e[0], 0.5 * e[2], 0.5 * e[2], e[1];
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(tensor, Eigen::EigenvaluesOnly).eigenvalues().cwiseAbs().maxCoeff();
 }
-
-}  // namespace
 
 FilmAdmissibility film_admissibility(const SceneRecord& r, const LayerFaceRoles& roles) {
   FilmAdmissibility film;

@@ -61,6 +61,9 @@ std::string film_line(const SceneRecord& record);
 // segments, its one segment at either end (mm).
 Eigen::VectorXd element_sizes_along(const InterfaceFields& f);
 
+// The largest |principal strain| of a cell of a record at its centre (Q1 or P1).
+double principal_strain(const SceneRecord& record, int cell);
+
 // One line for `solve`, or "" where the answer is admissible (or the record is not a layer scene's).
 std::string film_warning(const FilmAdmissibility& film);
 std::string film_warning(const SceneRecord& record);

@@ -104,7 +104,7 @@ def is_joint_file(f):
 # A file whose only study is a validity map (`study validity-map --scene`) gets the map's report.
 MAP_SECTIONS = (
     ("summary", "Summary", section_header.render),
-    ("validity_map", "Validity map", lambda ctx: section_validity_map.render(ctx, number="1")),
+    ("validity_map", "Validity map", lambda ctx: section_validity_map.render(ctx, number="2")),  # after "1. Run summary"
 )
 
 

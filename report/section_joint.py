@@ -159,6 +159,7 @@ def verdict_block(study, pairs):
     tau, eps_max, status = array(v, "tau"), array(v, "eps_max"), strings(v["status"])
     error = array(v, "error_at_eps_max")
     quantity = strings(v["quantity"]) if "quantity" in v else ["u"] * len(tau)
+    why_not = strings(v["why_not_judged"]) if "why_not_judged" in v else [""] * len(tau)
     floor = study.get("floor")
     lines = []
     for q in dict.fromkeys(quantity):
@@ -169,10 +170,13 @@ def verdict_block(study, pairs):
             value = {"found": f"up to ε = <b>{eps_max[i]:.3g} mm</b>",
                      "at_least": f"at every sampled ε, up to at least <b>{eps_max[i]:.3g} mm</b>",
                      "below_range": f"at no sampled ε (not even {eps_max[i]:.3g} mm)"}.get(status[i], esc(status[i]))
+            if status[i] == "not_judged":  # one reason for the quantity, not one per tau
+                parts = [f"not judged: {esc(why_not[i])}"]
+                continue
             parts.append(f"within {tau[i] * 100:g} % {value} ({error[i]:.2g})")
         label = VERDICT_LABELS.get(q, q).replace("at d", f"at d = {mm(d)} mm" if d is not None else "at d")
         mesh = ""
-        if floor is not None and ("verdict_" + q) in floor:
+        if floor is not None and ("verdict_" + q) in floor and np.isfinite(array(floor, "verdict_" + q)).any():
             h, e = array(floor, "h"), array(floor, "verdict_" + q)
             mesh = (f"<br><small>on the mesh, at ε = {mm(array(floor, 'eps')[0])} mm: "
                     + ", ".join(f"{e[k]:.2g} at h = {num(h[k])} mm" for k in range(len(h))) + "</small>")
@@ -184,7 +188,9 @@ def verdict_block(study, pairs):
             "(the distance there in brackets), and below it the same distance at the glue's own thickness on the "
             "study's mesh refined twice: where it moves, the verdict measures the mesh as well. A peak at d is resolved "
             "by the mesh only where d spans a few elements and the thinner lines' end zones (they shrink with ε): a "
-            "peak 'at no sampled ε' may be the mesh's at the thinnest ε — refine mesh_size.interface to tell.</p><ul>"
+            "peak 'at no sampled ε' may be the mesh's at the thinnest ε — refine mesh_size.interface to tell. What is "
+            "judged: each reaction component statics does not fix, on its own size; a peak at d as |layer − law| over the "
+            "law's largest |σ_N| (peel) or |σ_T| (shear) on the bondlines, never a pointwise ratio.</p><ul>"
             + "".join(lines) + "</ul>")
     if d is not None:
         text += (f"<p>d = {mm(d)} mm: {esc(attr(study, 'peak_distance_description', ''))}.</p>")
@@ -276,9 +282,15 @@ def closed_forms(study, bname):
     if "volkersen_shear" in g:
         curves["shear"]["Volkersen (shear lag)"] = array(g, "volkersen_shear")
     if "goland_reissner_shear" in g:
-        curves["shear"]["Goland–Reissner (with bending)"] = array(g, "goland_reissner_shear")
-        curves["peel"]["Goland–Reissner (with bending)"] = array(g, "goland_reissner_peel")
-    return array(g, "s"), curves, attr(cf, "joint", "")
+        # Its bending factor is the linear statics' of the joint's own supports (the model is linear);
+        # one k for both ends: where the supports are not symmetric the label says the mean is drawn.
+        k0, k1 = attr(g, "k_start"), attr(g, "k_end")
+        asymmetric = k0 is not None and k1 is not None and abs(k0 - k1) > 0.01 * abs(attr(g, "k", 1.0))
+        label = (f"Goland–Reissner, linear k = {attr(g, 'k'):.3g}"
+                 + (f" (ends {k0:.3g} / {k1:.3g}: symmetric form, their mean)" if asymmetric else ""))
+        curves["shear"][label] = array(g, "goland_reissner_shear")
+        curves["peel"][label] = array(g, "goland_reissner_peel")
+    return array(g, "s"), curves, attr(cf, "joint", ""), (attr(g, "start", ""), attr(g, "end", ""))
 
 
 def chosen_samples(pairs, nominal):
@@ -311,7 +323,7 @@ def bondline_figures(ctx, study, name, pairs, nominal):
                         label="layer: minus face")
                 ax.plot(lim.s, getattr(lim, "sigma_" + q), "--", color="k", lw=1.2, label="limit law at this ε")
                 if forms is not None and i == nominal:
-                    s_cf, curves, _ = forms
+                    s_cf, curves, _, _ = forms
                     for (cname, values), style in zip(curves["peel" if q == "N" else "shear"].items(), (":", "-.")):
                         ax.plot(s_cf, values, style, color="#2ca02c" if "Volkersen" in cname else "#9467bd", lw=1.5,
                                 label=cname)
@@ -320,7 +332,9 @@ def bondline_figures(ctx, study, name, pairs, nominal):
                 ax.set_title(f"ε = {mm(eps)} mm" + (" (the glue's own)" if i == nominal else ""), fontsize=9)
                 ax.autoscale(axis="y")
                 if row == 1:
-                    ax.set_xlabel("arc length s along the bondline (mm)")
+                    ends = forms[3] if forms is not None else ("", "")
+                    ax.set_xlabel("arc length s along the bondline (mm)" +
+                                  (f"\ns = 0: {ends[0]}\nfar end: {ends[1]}" if ends[0] else ""), fontsize=8)
             axes[0, col].legend(fontsize=6.5, loc="best")
             if forms is not None and i == nominal:
                 axes[1, col].legend(fontsize=6.5, loc="best")
@@ -344,13 +358,19 @@ def bondline_figures(ctx, study, name, pairs, nominal):
             rows = []
             for key in cf:
                 g = cf[key]
+                linear = attr(g, "k") is not None
                 rows.append([esc(key), num(attr(g, "P"), 4), num(attr(g, "overlap"), 4), num(attr(g, "t_1"), 3),
                              num(attr(g, "t_2"), 3), num(attr(g, "omega"), 4),
-                             num(attr(g, "k"), 3) if attr(g, "k") is not None else "—",
+                             (f"{num(attr(g, 'k'), 3)} (ends {num(attr(g, 'k_start'), 3)} / {num(attr(g, 'k_end'), 3)})"
+                              if linear else esc(attr(g, "goland_reissner_why_not", "") or "—")),
+                             num(attr(g, "k_nonlinear"), 3) if linear else "—",
                              num(attr(g, "lambda"), 3) if attr(g, "lambda") is not None else "—"])
-            out.append(f"<p>Closed forms ({esc(attr(cf, 'joint'))}): {esc(attr(cf, 'assumptions', ''))}.</p>" +
+            out.append(f"<p>Closed forms ({esc(attr(cf, 'joint'))}): {esc(attr(cf, 'assumptions', ''))}. The bending "
+                       "factor drawn is the linear statics' of this joint's supports, at either end of the overlap; "
+                       "Goland–Reissner's own k (geometrically nonlinear, for symmetric pinned ends) changes with the "
+                       "load and is not the linear model's: shown second, not drawn.</p>" +
                        table(["bondline", "P (force/mm)", "overlap (mm)", "t₁ (mm)", "t₂ (mm)", "ω (1/mm)",
-                              "k (bending)", "λ (peel)"], rows, css_class="small"))
+                              "k, linear (ends)", "GR's nonlinear k at P", "λ (peel)"], rows, css_class="small"))
         elif attr(cf, "why_not"):
             out.append(f"<p>No classical closed form drawn: {esc(attr(cf, 'why_not'))}.</p>")
     return "\n".join(out)

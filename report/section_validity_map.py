@@ -31,8 +31,8 @@ def render(ctx, number="7b"):
         "same glue, on the scene's mesh (h) and on half its element size (h/2). The contours are log10 of the "
         "relative distance at h/2, the white lines 1 % and 5 %. Dotted: not resolved — the mesh moves the "
         "distance by more than half between h and h/2, or the mesh has fewer than 4 elements over the joint's "
-        "shear-lag length √(E*_a L t/μ_g). Crossed: a scene of the cell did not converge (drawn, counted, never "
-        "dropped). Outlined in black: where the paper's 3 % / 30x rule would pick a 0 or ∞ law instead; the "
+        "shear-lag length √(E*_a L t/μ_g). Each cell is a tile: a cell that failed blanks its own tile only. "
+        "Crossed: a scene of the cell did not converge (counted, never dropped; why: the table below the maps). Outlined in black: where the paper's 3 % / 30x rule would pick a 0 or ∞ law instead; the "
         "table below each map gives what that costs.")]
     for name in sorted(g):
         body.append(joint_block(ctx, g[name], name))
@@ -51,6 +51,7 @@ def joint_block(ctx, s, name):
            f"{int(attr(s, 'wall_time_ranks', 1))} rank(s) × {int(attr(s, 'wall_time_threads', 1))} thread(s).</p>"]
     for q in MAPPED:
         out.append(map_figure(ctx, s, name, q))
+    out.append(failure_table(s))
     out.append(rule_table(s))
     out.append(estimate_figure(ctx, s, name))
     out.append(estimate_table(s))
@@ -78,7 +79,8 @@ def map_figure(ctx, s, name, q):
     fig, axes = plt.subplots(1, len(nus), figsize=(max(4.8 * len(nus), 7.0), 4.3), squeeze=False)
     # The colour levels span this quantity's values (half decades), so that a map whose distances stay
     # far below 1 % is not one colour; the 1 % and 5 % lines are drawn where the values reach them.
-    values = np.log10(np.clip(array(s, f"measured_{q}")[array(s, "converged") > 0], 1e-7, None))
+    measured = array(s, f"measured_{q}")
+    values = np.log10(np.clip(measured[(array(s, "converged") > 0) & np.isfinite(measured)], 1e-7, None))
     lo = np.floor(2 * values.min()) / 2 if len(values) else -6
     hi = max(np.ceil(2 * values.max()) / 2 if len(values) else 0, lo + 1)
     levels = np.arange(lo, hi + 0.01, 0.5)
@@ -86,21 +88,21 @@ def map_figure(ctx, s, name, q):
         ts, Es, g = grid(s, nu_value, q)
         X, Y = np.meshgrid(np.log10(ts), np.log10(Es))
         Z = np.log10(np.clip(g["measured"], 1e-7, None))
-        Z = np.where(g["converged"] > 0, Z, np.nan)
+        Z = np.where((g["converged"] > 0) & np.isfinite(g["measured"]), Z, np.nan)
+        # One tile per cell, centred on it: a cell that failed (or whose quantity is not judged) blanks
+        # its own tile only — a contour fill blanks every quad touching it, a quarter of a 3 x 3 map.
+        tiles = ax.pcolormesh(edges(np.log10(ts)), edges(np.log10(Es)), np.ma.masked_invalid(Z), cmap="viridis",
+                              vmin=levels[0], vmax=levels[-1], shading="flat")
+        fig.colorbar(tiles, ax=ax, label="log10 distance")
         if len(ts) > 1 and len(Es) > 1 and np.isfinite(Z).sum() >= 4:
-            cs = ax.contourf(X, Y, Z, levels=levels, cmap="viridis", extend="both")
             reached = [v for v in (np.log10(0.01), np.log10(0.05)) if np.nanmin(Z) < v < np.nanmax(Z)]
-            if reached:
+            if reached:  # the lines between cell centres, broken only next to a missing cell
                 lines = ax.contour(X, Y, Z, levels=reached, colors="white", linewidths=1.5, linestyles="solid")
                 ax.clabel(lines, fmt={np.log10(0.01): "1 %", np.log10(0.05): "5 %"}, fontsize=8)
-            fig.colorbar(cs, ax=ax, label="log10 distance")
-        else:
-            sc = ax.scatter(X, Y, c=Z, cmap="viridis", vmin=lo, vmax=hi, s=120)
-            fig.colorbar(sc, ax=ax, label="log10 distance")
         unresolved = (g["resolved"] == 0) & (g["converged"] > 0)
         ax.plot(X[unresolved], Y[unresolved], "k.", ms=4, label="not resolved")
         failed = g["converged"] == 0
-        ax.plot(X[failed], Y[failed], "rx", ms=8, mew=2, label="not converged")
+        ax.plot(X[failed], Y[failed], "rx", ms=8, mew=2, label="not converged (why: the table below)")
         rule = g["rule"] > 0
         ax.plot(X[rule], Y[rule], "s", mfc="none", mec="black", ms=11, label="the 3 % / 30x rule: 0 or ∞")
         ax.set_xlabel("log10 t/L")
@@ -117,6 +119,29 @@ def map_figure(ctx, s, name, q):
                             f"log10 of the relative distance of {esc(LABELS[q])} at h/2 (largest: "
                             f"{num(10 ** values.max() if len(values) else float('nan'))}); white lines 1 % and 5 % "
                             f"where it reaches them.")
+
+
+def edges(centres):
+    """The edges of tiles centred on sorted centres: midway between them, half a step beyond the ends."""
+    if len(centres) == 1:
+        return np.array([centres[0] - 0.5, centres[0] + 0.5])
+    mid = 0.5 * (centres[1:] + centres[:-1])
+    return np.concatenate(([2 * centres[0] - mid[0]], mid, [2 * centres[-1] - mid[-1]]))
+
+
+def failure_table(s):
+    """Every cell that did not converge, with why (each scene's verdict, as the terminal prints it)."""
+    if "failure" not in s:
+        return ""
+    failure = strings(s["failure"])
+    t, E, nu, converged = array(s, "t_over_L"), array(s, "E_ratio"), array(s, "nu"), array(s, "converged")
+    rows = [[num(t[i]), num(E[i]), num(nu[i]), esc(failure[i] or "(no reason recorded)")]
+            for i in range(len(t)) if converged[i] == 0 or failure[i]]
+    if not rows:
+        return ""
+    return ("<p>The cells that did not converge (crossed in the maps), and why: each scene's verdict (one rule for "
+            "'converged', core/solvers/stop_verdict.h). Their distances are not used.</p>" +
+            table(["t/L", "E_g/E_a", "ν_g", "why"], rows, css_class="small", left_columns=(3,)))
 
 
 def safe(name):
@@ -144,7 +169,7 @@ def estimate_figure(ctx, s, name):
         m, resolved = array(s, f"measured_{q}"), array(s, f"resolved_{q}")
         ends = array(s, f"ends_resolved_{q}")
         judged = np.where(ends > 0, array(s, f"estimate_{q}"), array(s, f"interior_{q}"))
-        ok = (resolved > 0) & (m > 0) & (judged > 0)
+        ok = (resolved > 0) & (array(s, "converged") > 0) & (m > 0) & (judged > 0)
         ax.loglog(m[ok], judged[ok], "o", ms=4, color=colours[q], label=q)
     lims = [1e-6, 1]
     ax.plot(lims, lims, "k-", lw=1)
@@ -164,14 +189,16 @@ def estimate_figure(ctx, s, name):
 
 def estimate_table(s):
     rows = []
+    converged = array(s, "converged") > 0
     for q in QUANTITIES:
-        resolved, within = array(s, f"resolved_{q}"), array(s, f"within_{q}")
-        ends = array(s, f"ends_resolved_{q}")
-        n = int(np.sum(resolved > 0))
-        rows.append([esc(q), str(n), str(int(np.sum((resolved > 0) & (within > 0)))),
-                     str(int(np.sum((resolved > 0) & (ends > 0))))])
-    return ("<p>SPEC 3 S6 judged on the map: at the cells above the mesh floor, the estimate within a factor "
-            f"{num(attr(s, 'factor'))} of the measured distance.</p>" +
+        # The cells the terminal counts: converged at every level and above the mesh floor.
+        resolved = (array(s, f"resolved_{q}") > 0) & converged
+        within, ends = array(s, f"within_{q}"), array(s, f"ends_resolved_{q}")
+        rows.append([esc(q), str(int(np.sum(resolved))), str(int(np.sum(resolved & (within > 0)))),
+                     str(int(np.sum(resolved & (ends > 0))))])
+    return ("<p>SPEC 3 S6 judged on the map: at the converged cells above the mesh floor, the estimate within a "
+            f"factor {num(attr(s, 'factor'))} of the measured distance (a quantity fixed by statics is not judged: "
+            "no cell).</p>" +
             table(["quantity", "cells above the floor", "within the factor", "of which ends resolved (h/2 ≤ 3t)"], rows))
 
 

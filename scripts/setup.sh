@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make libeigen3-dev libsuitesparse-dev libblas-dev libgmsh-dev libhdf5-dev
           libsiconos-numerics-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-h5py
-          libcli11-dev nlohmann-json3-dev libopenmpi-dev openmpi-bin libseccomp-dev)
+          libcli11-dev nlohmann-json3-dev libopenmpi-dev openmpi-bin libseccomp-dev libglpk-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

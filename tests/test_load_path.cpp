@@ -1,10 +1,18 @@
-// A load with no path, and a joint held by friction alone (SPEC §1.3; issue 35 items 1 and 4): the
-// double lap of cases/friction_double_lap, its inner strip held by friction alone (f = 0.5) between
-// two outer strips pressed onto it with 80 MPa over the 10 mm overlap (800 N/mm each), pulled by a
-// force on its left end. Checked before the solve, in both modes: the pull against f × the normal
-// force of the joint held stuck; a friction 0 or a law without shear leaves the pull no path at all.
-// Expected values by hand: the inner strip's equilibrium (the shear its bondlines carry is its pull),
-// the normal force at most the 1600 N/mm pressed on both outer strips.
+// A refusal is a proof (SPEC 1.3): before a solve, a scene is refused only where statics proves that
+// no forces inside each contact node's admissible set balance every body, force and moment (an LP,
+// cases/scene/load_path.h). The scenes:
+//  - the double lap of cases/friction_double_lap, its inner strip held by friction alone (f = 0.5)
+//    between two outer strips pressed onto it with 80 MPa over the 10 mm overlap (800 N/mm each),
+//    pulled by a force on its left end. With both outer strips clamped, statics does not fix the
+//    normal force (a clamp can press harder): no pull is refused; a pull the solve cannot hold fails
+//    and the stuck-joint estimate explains it. With the upper strip on rollers (u_x held, u_y free)
+//    the normal force is fixed by statics, N = 800 N/mm on each face, and friction holds at most
+//    0.5 x (800 + 800) = 800 N/mm: 790 solves, 810 and 1000 are refused with the least imbalance
+//    10 and 200 N/mm (by hand: pull − capacity).
+//  - cases/round_tenon: a round plug wedged in its socket by an undercut, pulled out along its neck
+//    (solves in both modes; main refused it as "none of its contacts is pressed"), and the same
+//    plug in a shallow socket (no undercut: every force inside the cones pushes it up, refused).
+// A friction 0 or a law without shear leaves the pull no path at all (exit 2).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -22,62 +30,129 @@ using namespace thinlayer;
 namespace {
 
 const std::string cases_dir = std::string(THINLAYER_CASES_DIR) + "/friction_double_lap/";
+const std::string tenon_dir = std::string(THINLAYER_CASES_DIR) + "/round_tenon/";
 
-// The shipped scene in a folder of the test's, with each (from, to) replaced in its JSON.
-std::string scene_with(const SceneFolder& f, const std::vector<std::pair<std::string, std::string>>& edits) {
-  f.write("friction_double_lap.geo", read_text_file(cases_dir + "friction_double_lap.geo"));
-  std::string json = read_text_file(cases_dir + "friction_double_lap.json");
-  for (const auto& [from, to] : edits) {
-    EXPECT_NE(json.find(from), std::string::npos) << from;
-    for (std::size_t at; (at = json.find(from)) != std::string::npos;) json.replace(at, from.size(), to);
-  }
-  return f.write("scene.json", json);
+// The shipped scene in a folder of the test's, with each (from, to) replaced in its JSON (and in its
+// geometry: `geo_edits`).
+std::string scene_with(const SceneFolder& f, const std::vector<std::pair<std::string, std::string>>& edits,
+                       const std::vector<std::pair<std::string, std::string>>& geo_edits = {}) {
+  auto edited = [](std::string text, const std::vector<std::pair<std::string, std::string>>& list) {
+    for (const auto& [from, to] : list) {
+      EXPECT_NE(text.find(from), std::string::npos) << from;
+      for (std::size_t at; (at = text.find(from)) != std::string::npos;) text.replace(at, from.size(), to);
+    }
+    return text;
+  };
+  f.write("friction_double_lap.geo", edited(read_text_file(cases_dir + "friction_double_lap.geo"), geo_edits));
+  return f.write("scene.json", edited(read_text_file(cases_dir + "friction_double_lap.json"), edits));
 }
 
 std::string pull(double force) { return "\"force\": [" + full_digits(-force) + ", 0]"; }
 
+// The upper strip on rollers at its right end (u_x held, u_y free), the lower one clamped: the
+// normal force on both faces is the 800 N/mm pressed on the upper strip, fixed by statics.
+std::string on_rollers(const SceneFolder& f, double force) {
+  return scene_with(f, {{"\"force\": [-500, 0]", pull(force)},
+                        {"\"supports\": [{\"group\": \"clamp\", \"u\": [0, 0]}]",
+                         "\"supports\": [{\"group\": \"clamp\", \"u\": [0, 0]}, {\"group\": \"roll\", \"u\": [0, null]}]"}},
+                    {{"Physical Curve(\"clamp\") = {8, 12};", "Physical Curve(\"roll\") = {8};\nPhysical Curve(\"clamp\") = {12};"}});
+}
+
+// Runs the command line; its exit status, and its stderr in `err`.
+int run(const std::string& args, const SceneFolder& f, std::string& err) {
+  const std::string path = (f.path / "err.txt").string();
+  const int raw = std::system((std::string(THINLAYER_CLI) + " " + args + " >/dev/null 2>" + path).c_str());
+  err = read_text_file(path);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
 }  // namespace
 
-// 1000 N/mm against a capacity of 0.5 × (at most 1600): refused before the solve, in both modes.
-TEST(LoadPath, FrictionOverloadIsNamedWithBothNumbersInBothModes) {
+// Rollers: the capacity is 800 N/mm by statics. 810 and 1000 N/mm are refused in both modes, with
+// the least imbalance (pull − 800) the proof stands on; 790 N/mm is not refused and solves.
+TEST(LoadPath, AFrictionOverloadFixedByStaticsIsRefusedWithItsImbalance) {
+  for (const double force : {810.0, 1000.0}) {
+    SceneFolder f;
+    SceneFileBulk bulk(read_scene_spec(on_rollers(f, force)));
+    for (const std::string mode : {"limit", "layer"}) {
+      const LoadPath path = scene_load_path(bulk, mode, 0.0);
+      EXPECT_TRUE(path.no_path.empty()) << path.no_path;
+      EXPECT_NEAR(path.imbalance_any_shear, 0.0, 1e-9 * force) << mode;
+      EXPECT_NEAR(path.imbalance_in_cones, force - 800.0, 1e-6 * force) << mode;
+      std::printf("%s mode, %g N/mm: %s\n", mode.c_str(), force, path.friction_overload.c_str());
+      EXPECT_NE(path.friction_overload.find("body 'inner' is loaded with (" + std::to_string(int(-force)) + ", 0) N/mm"),
+                std::string::npos) << path.friction_overload;
+      EXPECT_NE(path.friction_overload.find("friction cannot hold it"), std::string::npos);
+    }
+  }
+  SceneFolder g;
+  SceneFileBulk within(read_scene_spec(on_rollers(g, 790.0)));
+  const LoadPath path = scene_load_path(within, "limit", 0.0);
+  EXPECT_TRUE(path.no_path.empty() && path.friction_overload.empty()) << path.friction_overload;
+  const SceneFileScene s = solve_scene_file_limit(within, SolverKind::Fast, SolverOptions{});
+  ASSERT_TRUE(s.report.converged) << s.report.message;
+  EXPECT_NEAR(s.record.reactions.at("clamp").x() + s.record.reactions.at("roll").x(), 790.0, 1e-8 * 790.0);
+}
+
+// Clamped strips: statics leaves the normal force free, so 1000 N/mm is not refused; the solve runs,
+// fails (the strips cannot press 1000 N/mm of friction), and the estimate of the joint held stuck
+// explains it after the solver's own line: exit 1, nothing refused before.
+TEST(LoadPath, AnOverloadStaticsCannotProveIsSolvedAndTheEstimateExplainsTheFailure) {
   SceneFolder f;
-  SceneFileBulk bulk(read_scene_spec(scene_with(f, {{"\"force\": [-500, 0]", pull(1000)}})));
+  const std::string scene = scene_with(f, {{"\"force\": [-500, 0]", pull(1000)}});
+  SceneFileBulk bulk(read_scene_spec(scene));
   for (const std::string mode : {"limit", "layer"}) {
     const LoadPath path = scene_load_path(bulk, mode, 0.0);
-    EXPECT_TRUE(path.no_path.empty()) << path.no_path;
-    ASSERT_TRUE(path.capacity_estimated) << path.capacity_note;
-    ASSERT_EQ(path.friction.size(), 1u) << mode;
-    const FrictionHold& h = path.friction.front();
-    EXPECT_EQ(h.bodies, "'inner'");
-    EXPECT_NEAR(h.load, 1000.0, 1e-6);            // the inner strip's equilibrium: its bondlines shear its pull
-    EXPECT_GT(h.normal, 0.0);
-    EXPECT_LE(h.normal, 1600.0 * (1 + 1e-9));     // no more than the pressure puts on both outer strips
-    EXPECT_NEAR(h.capacity, 0.5 * h.normal, 1e-9 * h.normal);
-    EXPECT_TRUE(h.exceeded());
-    ASSERT_EQ(path.exceeded(), &h);
-    const std::string line = friction_line(h, "N");
-    std::printf("%s mode: %s\n", mode.c_str(), line.c_str());
-    EXPECT_NE(line.find("'inner'"), std::string::npos);
-    EXPECT_NE(line.find("1000 N/mm"), std::string::npos);
-    EXPECT_NE(line.find("exceeds"), std::string::npos);
+    EXPECT_TRUE(path.no_path.empty() && path.friction_overload.empty()) << mode << path.friction_overload;
+    EXPECT_LE(path.imbalance_in_cones, 1e-6 * path.loads) << mode;
+  }
+  const std::vector<FrictionHold> holds = scene_friction_estimate(bulk, "limit", 0.0);
+  ASSERT_EQ(holds.size(), 1u);
+  EXPECT_EQ(holds.front().bodies, "'inner'");
+  EXPECT_NEAR(holds.front().load, 1000.0, 1e-6);          // the inner strip's equilibrium: its bondlines shear its pull
+  EXPECT_LE(holds.front().normal, 1600.0 * (1 + 1e-9));   // no more than the pressure puts on both outer strips
+  EXPECT_TRUE(holds.front().exceeded());
+  std::string err;
+  EXPECT_EQ(run("solve --scene " + scene + " --mode limit", f, err), 1);
+  EXPECT_NE(err.find("NOT converged"), std::string::npos) << err;
+  EXPECT_NE(err.find("exceeds f x its normal force in the joint held stuck"), std::string::npos) << err;
+  EXPECT_NE(err.find("an estimate"), std::string::npos) << err;
+  EXPECT_LT(err.find("NOT converged"), err.find("an estimate")) << err;  // the estimate follows the failure
+}
+
+// The wedged round tenon: every force inside the cones it needs exists (the undercut pushes the head
+// down), so nothing is refused, and it solves in both modes with the clamp carrying the pull.
+TEST(LoadPath, TheWedgedRoundTenonSolvesInBothModes) {
+  SceneFileBulk bulk(read_scene_spec(tenon_dir + "round_tenon.json"));
+  for (const std::string mode : {"limit", "layer"}) {
+    const LoadPath path = scene_load_path(bulk, mode, 0.0);
+    EXPECT_TRUE(path.no_path.empty() && path.friction_overload.empty()) << mode << path.no_path << path.friction_overload;
+    const SceneFileScene s = mode == "limit" ? solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{})
+                                             : solve_scene_file_layer(bulk, 0.0, SolverKind::Fast, SolverOptions{});
+    ASSERT_TRUE(s.report.converged) << mode << ": " << s.report.message;
+    EXPECT_NEAR(s.record.reactions.at("clamp").y(), -100.0, 1e-8 * 100) << mode;
   }
 }
 
-// The estimate is not optimistic: a pull of 98 % of the estimated capacity is held by the solve,
-// which converges with the clamp carrying the whole pull.
-TEST(LoadPath, APullWithinTheEstimatedCapacityIsHeld) {
-  SceneFolder f;
-  SceneFileBulk probe(read_scene_spec(scene_with(f, {})));
-  const LoadPath estimate = scene_load_path(probe, "limit", 0.0);
-  ASSERT_EQ(estimate.friction.size(), 1u);
-  EXPECT_FALSE(estimate.friction.front().exceeded());
-  const double F = 0.98 * estimate.friction.front().capacity;
-  SceneFolder g;
-  SceneFileBulk bulk(read_scene_spec(scene_with(g, {{"\"force\": [-500, 0]", pull(F)}})));
-  ASSERT_EQ(scene_load_path(bulk, "limit", 0.0).exceeded(), nullptr);
-  const SceneFileScene s = solve_scene_file_limit(bulk, SolverKind::Fast, SolverOptions{});
-  ASSERT_TRUE(s.report.converged) << s.report.message;
-  EXPECT_NEAR(s.record.reactions.at("clamp").x(), F, 1e-8 * F);
+// The same plug in a shallow socket (no undercut): within f = 0.3 every contact force pushes the
+// head up, so the pull of 100 N/mm has at least 100 N/mm of imbalance; refused in both modes, exit 1.
+TEST(LoadPath, APlugWithNoUndercutIsRefusedByStatics) {
+  const std::string scene = tenon_dir + "shallow_socket.json";
+  SceneFileBulk bulk(read_scene_spec(scene));
+  for (const std::string mode : {"limit", "layer"}) {
+    const LoadPath path = scene_load_path(bulk, mode, 0.0);
+    EXPECT_TRUE(path.no_path.empty()) << path.no_path;
+    EXPECT_GE(path.imbalance_in_cones, 100.0 * (1 - 1e-9)) << mode;
+    EXPECT_NE(path.friction_overload.find("body 'plug' is loaded with (0, 100) N/mm"), std::string::npos)
+        << path.friction_overload;
+    SceneFolder f;
+    std::string err;
+    EXPECT_EQ(run("solve --scene " + scene + " --mode " + mode + " --out " + (f.path / "r.h5").string(), f, err), 1);
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_NE(err.find("Statics proves"), std::string::npos) << err;
+    EXPECT_NE(err.find("nothing solved"), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(f.path / "r.h5"));
+  }
 }
 
 // Friction 0: the bondlines push only; nothing carries the pull along them. A bilateral law
@@ -103,34 +178,15 @@ TEST(LoadPath, NoShearOnTheBondlinesLeavesThePullNoPath) {
       h, {{"\"friction\": 0.5,", "\"faces\": {\"plus\": \"bonded\", \"minus\": \"bonded\"},"}})));
   const LoadPath ok = scene_load_path(glued, "limit", 0.0);
   EXPECT_TRUE(ok.no_path.empty()) << ok.no_path;
-  EXPECT_TRUE(ok.friction.empty());
+  EXPECT_TRUE(ok.friction_overload.empty()) << ok.friction_overload;
 }
 
-// The command line: exit 1 and one line naming the body and both numbers, before any solve (the
-// solver, given the same scene, ran for 4 s in limit mode and 145 s in layer mode before ending
-// "singular system"); friction 0: exit 2 (bad input), one line.
-TEST(LoadPath, CommandLineSaysItInOneLine) {
-  SceneFolder f;
-  const std::string scene = scene_with(f, {{"\"force\": [-500, 0]", pull(1000)}});
-  for (const std::string mode : {"limit", "layer"}) {
-    const std::string err = (f.path / "err.txt").string();
-    const int raw = std::system((std::string(THINLAYER_CLI) + " solve --scene " + scene + " --mode " + mode +
-                                 " --out " + (f.path / "r.h5").string() + " >/dev/null 2>" + err).c_str());
-    ASSERT_TRUE(WIFEXITED(raw));
-    EXPECT_EQ(WEXITSTATUS(raw), 1) << mode;
-    const std::string text = read_text_file(err);
-    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
-    EXPECT_NE(text.find("body 'inner' is held by friction alone: its load along the bondlines, 1000 N/mm, exceeds"),
-              std::string::npos) << text;
-    EXPECT_FALSE(std::filesystem::exists(f.path / "r.h5"));  // nothing solved, nothing written
-  }
+// Friction 0 on the command line: exit 2 (bad input), one line.
+TEST(LoadPath, CommandLineSaysANoPathInOneLine) {
   SceneFolder g;
   const std::string frictionless = scene_with(g, {{"\"friction\": 0.5", "\"friction\": 0"}});
-  const std::string err = (g.path / "err.txt").string();
-  const int raw = std::system((std::string(THINLAYER_CLI) + " solve --scene " + frictionless + " >/dev/null 2>" + err).c_str());
-  ASSERT_TRUE(WIFEXITED(raw));
-  EXPECT_EQ(WEXITSTATUS(raw), 2);
-  const std::string text = read_text_file(err);
+  std::string text;
+  EXPECT_EQ(run("solve --scene " + frictionless, g, text), 2);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
   EXPECT_NE(text.find("has no path to a support"), std::string::npos) << text;
 }

@@ -7,8 +7,10 @@
 #include <set>
 #include <sstream>
 
+#include <Eigen/SparseCore>
+
 #include "core/fem/linear_system.h"
-#include "core/linalg/box_qp.h"
+#include "core/linalg/least_imbalance.h"
 #include "core/solvers/bonded_solve.h"
 
 namespace thinlayer {
@@ -112,67 +114,156 @@ std::string carries(const Interface& i) {
   return s;
 }
 
-// Question 1: the loads against the cone of the forces the interfaces can put on the group.
-// Residual of min ‖G a + b‖, a ≥ 0 (b = the loads; the moment scaled by the group's size),
-// relative to ‖b‖.
-double unbalanced(const Group& g, const std::vector<Interface>& interfaces, const std::set<int>& in) {
-  std::vector<Eigen::Vector3d> generators;
-  auto add = [&](const Eigen::Vector2d& x, const Eigen::Vector2d& f) {
-    generators.emplace_back(f.x(), f.y(), cross(x - g.centre, f) / g.size);
-  };
+// What an interface can put on a body in the friction-unbounded question, in words.
+std::string support_words(const Model& model, int body) {
+  std::set<std::string> held;
+  for (const DirichletCondition& d : model.dirichlet)
+    if (d.body == body && !d.nodes.empty()) held.insert(d.name + (d.component == 0 ? " holds u_x" : " holds u_y"));
+  if (held.empty()) return "it has no support";
+  std::string s;
+  for (const std::string& h : held) s += (s.empty() ? "" : ", ") + h;
+  return s;
+}
+
+// The statics LP (see the header): rows 3 per body (force x, force y, moment / size), columns the
+// forces each interface node and each held support component can apply.
+struct Statics {
+  std::vector<Group> bodies;            // one per model body, loads included
+  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<bool> free_column;
+  int columns = 0;
+  Eigen::VectorXd loads;                // b: the loads' rows
+
+  explicit Statics(const Model& model) {
+    for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) bodies.push_back(make_group(model, {b}));
+    loads = Eigen::VectorXd::Zero(3 * bodies.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      loads.segment<3>(3 * b) << bodies[b].force.x(), bodies[b].force.y(), bodies[b].moment / bodies[b].size;
+  }
+  // A force f applied at x on body b (and −f on body `other`, if any): one column.
+  void add(int body, int other, const Eigen::Vector2d& x, const Eigen::Vector2d& f, bool free) {
+    for (const auto& [b, sign] : {std::pair{body, 1.0}, std::pair{other, -1.0}}) {
+      if (b < 0) continue;
+      const Group& g = bodies[b];
+      entries.emplace_back(3 * b, columns, sign * f.x());
+      entries.emplace_back(3 * b + 1, columns, sign * f.y());
+      entries.emplace_back(3 * b + 2, columns, sign * cross(x - g.centre, f) / g.size);
+    }
+    free_column.push_back(free);
+    ++columns;
+  }
+  LeastImbalance solve(const Eigen::VectorXd& row_weight = {}) const {
+    Eigen::SparseMatrix<double> G(loads.size(), columns);
+    G.setFromTriplets(entries.begin(), entries.end());
+    return least_imbalance(G, loads, free_column, row_weight);
+  }
+};
+
+// The least imbalance of every body's balance: with the Coulomb cones (`cones`), or with any shear
+// where the law has one (question 1). `where`: weigh a supported body's rows twice an unsupported
+// one's, so that of the balances that leave an imbalance the one returned leaves it, where it can,
+// on the bodies held by their interfaces alone (which body to name; its total is then weighted).
+LeastImbalance statics_imbalance(const Model& model, const std::vector<Interface>& interfaces, bool cones,
+                                 bool where = false) {
+  Statics st(model);
   for (const Interface& i : interfaces) {
-    std::vector<const InterfaceNode*> nodes;
-    for (const InterfaceNode& n : i.nodes)
-      if (side(n, in) != 0) nodes.push_back(&n);
-    // At most ~64 nodes an interface, its ends always: the cone of a distributed force's resultant
-    // and moment is spanned by its points' (a straight bondline's by its two ends).
-    const std::size_t stride = std::max<std::size_t>(1, nodes.size() / 64);
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-      if (k % stride != 0 && k + 1 != nodes.size()) continue;
-      const InterfaceNode& n = *nodes[k];
-      const double s = side(n, in);
-      const Eigen::Vector2d normal = s * n.normal, tangent = n.tangent();
-      if (i.law.K_N() > 0) {
-        add(n.x, normal);                        // a push away from the other side
-        if (i.law.bilateral) add(n.x, -normal);  // and a pull
+    const InterfaceLaw& law = i.law;
+    for (const InterfaceNode& n : i.nodes) {
+      const int minus = n.on_foundation() ? -1 : n.minus_body;
+      const Eigen::Vector2d normal = n.normal, tangent = n.tangent();  // the push on the plus side: +n
+      if (law.bilateral) {
+        if (law.K_N() > 0) st.add(n.plus_body, minus, n.x, normal, true);
+        if (law.K_T() > 0) st.add(n.plus_body, minus, n.x, tangent, true);
+        continue;
       }
-      if (shears(i.law)) {
-        add(n.x, tangent);
-        add(n.x, -tangent);
+      if (!(law.K_N() > 0)) continue;  // an open law: no force (and so no friction either)
+      if (!shears(law)) {
+        st.add(n.plus_body, minus, n.x, normal, false);
+      } else if (cones) {  // the two rays of the 2D Coulomb cone
+        st.add(n.plus_body, minus, n.x, normal + law.friction * tangent, false);
+        st.add(n.plus_body, minus, n.x, normal - law.friction * tangent, false);
+      } else {
+        st.add(n.plus_body, minus, n.x, normal, false);
+        st.add(n.plus_body, minus, n.x, tangent, true);
       }
     }
   }
-  const Eigen::Vector3d b(g.force.x(), g.force.y(), g.moment / g.size);
-  if (generators.empty()) return 1.0;
-  Eigen::MatrixXd G(3, generators.size());
-  for (std::size_t j = 0; j < generators.size(); ++j) G.col(static_cast<Eigen::Index>(j)) = generators[j];
-  Eigen::MatrixXd A = G.transpose() * G;
-  // A tiny ridge makes the least-squares strictly convex (GᵀG has rank 3); it moves the residual by
-  // about its square root times ‖b‖, far below the 1e-6 the check asks.
-  A.diagonal().array() += 1e-14 * std::max(A.diagonal().maxCoeff(), 1e-300);
-  const Eigen::VectorXd c = G.transpose() * b;
-  Eigen::VectorXd a = Eigen::VectorXd::Zero(G.cols());
-  solve_box_qp(A, c, Eigen::VectorXd::Zero(G.cols()), Eigen::VectorXd::Constant(G.cols(), INFINITY), a, 20000);
-  return (G * a + b).norm() / b.norm();
+  for (const DirichletCondition& d : model.dirichlet)
+    for (int node : d.nodes)
+      st.add(d.body, -1, model.bodies[d.body].mesh.nodes.row(node).transpose(), Eigen::Vector2d::Unit(d.component), true);
+  if (!where) return st.solve();
+  Eigen::VectorXd weight(st.loads.size());
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) weight.segment<3>(3 * b).setConstant(model.bodies[b].floating ? 1.0 : 2.0);
+  return st.solve(weight);
 }
 
-std::string no_path_line(const Group& g, const std::vector<Interface>& interfaces, const std::set<int>& in,
-                         const std::string& force_unit) {
+// The bodies that carry the imbalance in a balance of statics_imbalance(..., where = true), the
+// largest first.
+std::vector<int> unbalanced_bodies(const Model& model, const LeastImbalance& lp) {
+  std::vector<std::pair<double, int>> by_size;
+  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) {
+    const double off = lp.imbalance.segment<3>(3 * b).lpNorm<1>();
+    if (off > 1e-9 * lp.imbalance.lpNorm<1>()) by_size.emplace_back(-off, b);
+  }
+  std::sort(by_size.begin(), by_size.end());
+  std::vector<int> out;
+  for (const auto& [size, b] : by_size) out.push_back(b);
+  return out;
+}
+
+std::string loaded_with(const Group& g, const std::string& force_unit) {
   std::ostringstream s;
   s << "body " << g.name << " is loaded with (" << number(g.force.x()) << ", " << number(g.force.y()) << ") " << force_unit
     << "/mm";
   if (g.force.norm() <= 1e-9 * std::abs(g.moment) / g.size)  // a pure moment (a force's moment depends on the point)
     s << " and a moment " << number(g.moment) << " " << force_unit << " mm/mm";
-  s << ", has no support, and nothing its interfaces can carry balances that load:";
-  std::set<std::string> seen;
+  return s.str();
+}
+
+// The interfaces that touch body b, each with what it carries.
+std::string interface_words(const std::vector<Interface>& interfaces, int b) {
+  std::string s;
   for (const Interface& i : interfaces)
     for (const InterfaceNode& n : i.nodes)
-      if (side(n, in) != 0) {
-        if (seen.insert(i.name).second) s << (seen.size() == 1 ? " " : "; ") << carries(i);
+      if (n.plus_body == b || (!n.on_foundation() && n.minus_body == b)) {
+        s += (s.empty() ? ": " : "; ") + carries(i);
         break;
       }
-  if (seen.empty()) s << " it touches no interface";
-  s << " (the load has no path to a support)";
+  return s.empty() ? ": it touches no interface" : s;
+}
+
+// "the least imbalance ... is X N/mm (...)": the number the refusal stands on, and what it sums.
+// `least`: the unweighted optimum (the proof); `where`: a balance that leaves it on the bodies
+// held by their interfaces alone where it can.
+std::string least_imbalance_words(const Model& model, double least, const LeastImbalance& where,
+                                  const std::string& force_unit) {
+  std::ostringstream s;
+  s << "the least imbalance any such forces leave is " << number(least) << " " << force_unit
+    << "/mm (summed over every body's force and moment rows, a moment over its body's size; on";
+  const std::vector<int> bodies = unbalanced_bodies(model, where);
+  for (std::size_t k = 0; k < bodies.size(); ++k) s << (k ? ", '" : " '") << model.bodies[bodies[k]].name << "'";
+  s << " in the nearest balance; a linear program, GLPK's exact simplex)";
+  return s.str();
+}
+
+std::string no_path_line(const Model& model, const std::vector<Interface>& interfaces, double least, const LeastImbalance& where,
+                         const std::string& force_unit) {
+  const int b = unbalanced_bodies(model, where).front();
+  std::ostringstream s;
+  s << loaded_with(make_group(model, {b}), force_unit)
+    << " and nothing its supports and interfaces can carry balances that load: " << support_words(model, b)
+    << "; its interfaces" << interface_words(interfaces, b) << ". Statics, every body's force and moment: "
+    << least_imbalance_words(model, least, where, force_unit) << "; the load has no path to a support";
+  return s.str();
+}
+
+std::string friction_overload_line(const Model& model, const std::vector<Interface>& interfaces, double least, const LeastImbalance& where,
+                                   const std::string& force_unit) {
+  const int b = unbalanced_bodies(model, where).front();
+  std::ostringstream s;
+  s << loaded_with(make_group(model, {b}), force_unit) << " and its contacts cannot hold it (its interfaces" << interface_words(interfaces, b) << ")"
+    << ". Statics proves that no forces inside the friction cones (|r_T| <= f r_N) balance every body, force and moment: "
+    << least_imbalance_words(model, least, where, force_unit) << "; friction cannot hold it";
   return s.str();
 }
 
@@ -188,14 +279,27 @@ std::vector<Interface> stuck(const std::vector<Interface>& interfaces) {
 
 }  // namespace
 
-const FrictionHold* LoadPath::exceeded() const {
-  for (const FrictionHold& h : friction)
-    if (h.exceeded()) return &h;
-  return nullptr;
-}
-
 LoadPath check_load_path(const Model& model, const std::vector<Interface>& interfaces, const std::string& force_unit) {
   LoadPath out;
+  const Statics loads(model);
+  out.loads = loads.loads.lpNorm<1>();
+  if (!(out.loads > 0)) return out;  // nothing loaded (displacements imposed): the zero forces balance it
+  const double refused = 1e-6 * out.loads;
+  const LeastImbalance any_shear = statics_imbalance(model, interfaces, false);
+  out.imbalance_any_shear = any_shear.total;
+  if (any_shear.total > refused) {
+    out.no_path = no_path_line(model, interfaces, any_shear.total, statics_imbalance(model, interfaces, false, true), force_unit);
+    return out;
+  }
+  const LeastImbalance in_cones = statics_imbalance(model, interfaces, true);
+  out.imbalance_in_cones = in_cones.total;
+  if (in_cones.total > refused)
+    out.friction_overload =
+        friction_overload_line(model, interfaces, in_cones.total, statics_imbalance(model, interfaces, true, true), force_unit);
+  return out;
+}
+
+std::vector<FrictionHold> friction_estimate(const Model& model, const std::vector<Interface>& interfaces) {
   const std::vector<int> group_of = held_groups(model, interfaces);
   std::map<int, std::vector<int>> members;
   for (std::size_t b = 0; b < group_of.size(); ++b) members[group_of[b]].push_back(static_cast<int>(b));
@@ -208,12 +312,7 @@ LoadPath check_load_path(const Model& model, const std::vector<Interface>& inter
     const bool supported = std::any_of(bodies.begin(), bodies.end(), [&](int b) { return !model.bodies[b].floating; });
     if (supported) continue;
     Held h{make_group(model, bodies), std::set<int>(bodies.begin(), bodies.end())};
-    const double scale = h.group.force.norm() + std::abs(h.group.moment) / h.group.size;
-    if (!(scale > 0)) continue;  // unloaded (a layer): whatever holds it, nothing needs a path
-    if (unbalanced(h.group, interfaces, h.in) > 1e-6) {
-      out.no_path = no_path_line(h.group, interfaces, h.in, force_unit);
-      return out;
-    }
+    if (!(h.group.force.norm() + std::abs(h.group.moment) / h.group.size > 0)) continue;  // unloaded (a layer)
     // Held by contact and friction alone: no interface of the group is bilateral.
     bool contact_alone = true, touches = false;
     for (const Interface& i : interfaces)
@@ -225,14 +324,14 @@ LoadPath check_load_path(const Model& model, const std::vector<Interface>& inter
         }
     if (touches && contact_alone) by_friction.push_back(std::move(h));
   }
+  std::vector<FrictionHold> out;
   if (by_friction.empty()) return out;
 
   // The normal forces: the scene held stuck, one sparse solve.
   const LinearSystem system(model);
   const ContactProblem problem(system, stuck(interfaces));
   const SolveReport held = solve_bonded(problem);
-  out.capacity_estimated = held.converged;
-  if (!held.converged) out.capacity_note = "the stuck joint's solve did not converge (" + held.message + ")";
+  if (!held.converged) return out;
   for (const Held& h : by_friction) {
     FrictionHold f;
     f.bodies = h.group.name;
@@ -262,7 +361,7 @@ LoadPath check_load_path(const Model& model, const std::vector<Interface>& inter
     f.scale = h.group.force.norm();
     f.opens = !pressed;
     for (const std::string& c : coefficients) f.friction += (f.friction.empty() ? "" : " / ") + c;
-    if (out.capacity_estimated) out.friction.push_back(f);
+    out.push_back(f);
   }
   return out;
 }
@@ -271,14 +370,15 @@ std::string friction_line(const FrictionHold& h, const std::string& force_unit) 
   const std::string unit = " " + force_unit + "/mm";
   std::ostringstream s;
   if (h.opens) {
-    s << "body " << h.bodies << " is held by contact alone and none of its contacts is pressed (the joint held stuck "
-      << "pulls every one apart, one linear solve): they open, and nothing holds its load of " << number(h.scale) << unit;
+    s << "body " << h.bodies << " is held by contact alone and none of its contacts is pressed in the joint held stuck "
+      << "(an estimate, one linear solve: it pulls every one apart), so nothing may hold its load of " << number(h.scale)
+      << unit;
     return s.str();
   }
-  s << "body " << h.bodies << " is held by " << (h.load > 0 ? "friction" : "contact") << " alone: its load along the bondlines, " << number(h.load) << unit << ", "
-    << (h.exceeded() ? "exceeds" : "is within") << " f x its normal force, " << h.friction << " x " << number(h.normal, 5)
-    << " = " << number(h.capacity) << unit
-    << " (the normal force of the joint held stuck, one linear solve)" << (h.exceeded() ? ": friction cannot hold it" : "");
+  s << "body " << h.bodies << " is held by " << (h.load > 0 ? "friction" : "contact") << " alone: its load along the bondlines, "
+    << number(h.load) << unit << ", " << (h.exceeded() ? "exceeds" : "is within") << " f x its normal force in the joint held stuck, "
+    << h.friction << " x " << number(h.normal, 5) << " = " << number(h.capacity) << unit
+    << " (an estimate, one linear solve: where the joint slides the normal force may differ)";
   return s.str();
 }
 

@@ -229,6 +229,12 @@ LoadPath scene_load_path(const SceneFileBulk& bulk, const std::string& mode, dou
   return check_load_path(layer.model, layer.interfaces, force);
 }
 
+std::vector<FrictionHold> scene_friction_estimate(const SceneFileBulk& bulk, const std::string& mode, double eps) {
+  if (mode == "limit") return friction_estimate(bulk.model(), bulk.limit_interfaces(eps));
+  const SceneLayerModel layer = make_scene_layer_model(bulk.spec(), bulk.meshes(), bulk.interface_nodes(), eps);
+  return friction_estimate(layer.model, layer.interfaces);
+}
+
 const CondensedInterface& SceneFileBulk::condensed() {
   if (!condensed_) {
     const ContactProblem geometry(*system_, limit_interfaces(0, /*with_laws=*/false));
@@ -335,9 +341,16 @@ SceneFileScene solve_scene_file_layer(const SceneFileBulk& bulk, double eps, Sol
         r.text["layer_quadrature"] = quadrature_name(band.selective_integration);
         r.numbers["layer_min_angle_deg"] = layer.layer_quality[i].min_angle_deg;
         r.numbers["layer_max_aspect_ratio"] = layer.layer_quality[i].max_aspect_ratio;
-        scene.layer_quality = layer.layer_quality[i];
         first_layer = false;
       }
+      // What `solve` prints: every layer's cells together, the worst angles and aspect ratio of all.
+      const MeshQuality& q = layer.layer_quality[i];
+      MeshQuality& all = scene.layer_quality;
+      all.min_angle_deg = all.cells ? std::min(all.min_angle_deg, q.min_angle_deg) : q.min_angle_deg;
+      all.max_angle_deg = all.cells ? std::max(all.max_angle_deg, q.max_angle_deg) : q.max_angle_deg;
+      all.max_aspect_ratio = std::max(all.max_aspect_ratio, q.max_aspect_ratio);
+      all.min_scaled_jacobian = all.cells ? std::min(all.min_scaled_jacobian, q.min_scaled_jacobian) : q.min_scaled_jacobian;
+      all.cells += q.cells;
       k += 2;
     }
     r.combined_status.insert(r.combined_status.end(), b.status.begin(), b.status.end());

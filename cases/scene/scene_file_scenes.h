@@ -73,10 +73,12 @@ class SceneFileBulk {
 // the joint can hold (saying why not).
 void check_layer_mode(const SceneFileBulk& bulk, double eps);
 
-// Does every load have a path to a support, and can friction hold what friction alone holds?
-// (cases/scene/load_path.h) On the model of `mode` ("limit" or "layer") at thickness eps (0: each
+// Does every load have a path to a support, and one inside the friction cones? What statics proves
+// (cases/scene/load_path.h), on the model of `mode` ("limit" or "layer") at thickness eps (0: each
 // glue's own), before the solve.
 LoadPath scene_load_path(const SceneFileBulk& bulk, const std::string& mode, double eps);
+// After a solve that failed: what friction alone had to hold, estimated from the joint held stuck.
+std::vector<FrictionHold> scene_friction_estimate(const SceneFileBulk& bulk, const std::string& mode, double eps);
 
 // What a scene did on one bondline.
 struct SceneBondline {
@@ -93,7 +95,7 @@ struct SceneFileScene {
   SolveReport report;
   StatusCount limit;          // limit mode: counts over every bondline
   LayerCounts counts;         // layer mode: per face and combined, over every layer bondline
-  MeshQuality layer_quality;  // layer mode: the first layer's
+  MeshQuality layer_quality;  // layer mode: every layer's together (cells summed, the worst angles and ratio)
   std::vector<SceneBondline> bondlines;
   std::map<std::string, Eigen::Vector2d> loads;  // each load group's resultant force (force unit per mm)
   // false: every bondline node is open (SPEC §5), or the bondlines carry next to nothing — under

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/solvers/mixed_system.h"
+#include "core/solvers/stop_verdict.h"
 
 namespace thinlayer {
 
@@ -26,20 +27,6 @@ std::vector<Active> bonded_statuses(const ContactProblem& problem) {
   return statuses;
 }
 
-namespace {
-
-StopCause stop_cause(const MixedSystem::Answer& answer, const SolveReport& report) {
-  if (!report.u.allFinite() || !report.r.allFinite() || !std::isfinite(report.residual.value()))
-    return StopCause::NonFinite;
-  if (answer.singular) return StopCause::Singular;
-  if (report.residual.value() <= report.tolerance) return StopCause::Converged;
-  // The residual is the answer's own (extended precision): within the floor, rounding it to double
-  // accounts for all of it; above, the LU itself fell short (its condition estimate says how far).
-  return report.residual.value() <= report.residual.floor() ? StopCause::RoundOffFloor : StopCause::LossOfAccuracy;
-}
-
-}  // namespace
-
 SolveReport solve_bonded(const ContactProblem& problem, const SolverOptions& options, MixedSystem* factored) {
   if (!every_interface_bonded(problem))
     throw std::invalid_argument("solve_bonded: an interface of this problem is not bonded (its law is unilateral)");
@@ -53,22 +40,31 @@ SolveReport solve_bonded(const ContactProblem& problem, const SolverOptions& opt
   std::unique_ptr<MixedSystem> local;
   if (!factored) local = std::make_unique<MixedSystem>(problem);
   MixedSystem& mixed = factored ? *factored : *local;
+  mixed.prove_round_off(true);  // the verdict's floor needs it
   const MixedSystem::Answer answer = mixed.solve(bonded_statuses(problem));
   report.iterations = 1;
   report.u = answer.u;
   report.r = answer.r;
   report.residual = contact_residual(problem, answer.u, answer.r, answer.band_z);
-  report.condition_estimate = 1.0 / std::max(answer.rcond, 1e-300);
-  report.stop_cause = stop_cause(answer, report);
-  report.converged = report.stop_cause == StopCause::Converged;
+  // The verdict (core/solvers/stop_verdict.h) on this one linear system: its answer refined to its
+  // last digit (SparseLU::solve), its condition bounded below and what it nearly leaves free.
+  LinearEvidence evidence;
+  evidence.linear = true;
+  evidence.factor_failed = answer.singular;
+  evidence.at_round_off = answer.at_round_off;
+  const MixedSystem::NearNull near = mixed.near_null();
+  evidence.condition = near.condition;
+  evidence.free_motion = near.u;
+  report.condition_estimate = near.condition;
+  const StopVerdict verdict = stop_verdict(problem, answer.u, answer.r, report.residual, options.tolerance, evidence);
+  report.stop_cause = verdict.cause;
+  report.converged = verdict.converged;
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream msg;
   msg << (report.converged ? "converged" : "NOT converged")
       << ": every face bonded, one sparse solve of the whole system, residual " << report.residual.value()
       << " (tolerance " << options.tolerance << ")";
-  if (!report.converged) msg << ": " << to_string(report.stop_cause) << "; condition estimate " << report.condition_estimate;
-  else if (report.condition_estimate > 1e12)
-    msg << "; ill-conditioned: condition estimate " << report.condition_estimate;
+  if (!report.converged) msg << ": " << verdict.why;
   report.message = msg.str();
   return report;
 }

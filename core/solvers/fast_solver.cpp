@@ -17,6 +17,7 @@
 #include "core/solvers/friction_path.h"
 #include "core/solvers/mixed_system.h"
 #include "core/solvers/sparse_newton.h"
+#include "core/solvers/stop_verdict.h"
 
 namespace thinlayer {
 
@@ -27,18 +28,19 @@ namespace {
 // all (measured on the scene set and the generator's seeds: docs/solvers.md).
 constexpr int exact_steps_cap = 5;
 
-StopCause stop_cause(const Condensed& c, const std::vector<Active>& statuses, const ActiveSetRun& run,
-                     const SolveReport& report, bool cap_reached, bool adrift) {
+StopCause stop_cause(const ContactProblem& problem, const Condensed& c, const std::vector<Active>& statuses,
+                     const ActiveSetRun& run, const SolveReport& report, bool cap_reached, bool adrift) {
   if (!report.u.allFinite() || !report.r.allFinite() || !std::isfinite(report.residual.value()))
     return StopCause::NonFinite;
   if (floating_bodies_free(c, statuses)) return StopCause::Singular;
   if (report.converged) return StopCause::Converged;
-  // The residual is the answer's own (evaluated in extended precision, contact_residual): at or
-  // below the floor, rounding the answer to double accounts for all of it; above, a stall.
-  if (report.residual.value() <= report.residual.floor()) return StopCause::RoundOffFloor;
-  if (adrift) return StopCause::LayerAdrift;
-  if (cap_reached) return StopCause::IterationCap;
-  return run.singular ? StopCause::Singular : StopCause::LossOfAccuracy;
+  const StopCause iteration = adrift ? StopCause::LayerAdrift : cap_reached ? StopCause::IterationCap
+                              : run.singular ? StopCause::Singular : StopCause::LossOfAccuracy;
+  // The one rule (core/solvers/stop_verdict.h): this answer is not shown to be one linear system's
+  // exact solution rounded to double, so it claims no round-off floor.
+  LinearEvidence evidence;
+  evidence.condition = report.condition_estimate;
+  return stop_verdict(problem, report.u, report.r, report.residual, report.tolerance, evidence, iteration).cause;
 }
 
 std::string explain(const SolveReport& report, int max_iterations) {
@@ -57,11 +59,7 @@ std::string explain(const SolveReport& report, int max_iterations) {
     case StopCause::NonFinite:
       why << "NaN or Inf in the iterate";
       break;
-    case StopCause::RoundOffFloor:
-      why << "the residual, evaluated in extended precision, is within the round-off floor of this answer stored in "
-             "double ("
-          << report.residual.floor()
-          << "): no displacement and force stored in double balance it closer; the best iterate is reported";
+    case StopCause::RoundOffFloor:  // not claimed here without its proof (stop_verdict)
       break;
     case StopCause::LayerAdrift:
       why << "the floating layer is pushed by a force that only its selection spring resists; the proximal steps "
@@ -152,7 +150,7 @@ SolveReport attempt(const ContactProblem& problem, const CondensedInterface& con
   // factors (whose estimate is crude and optimistic, so it rarely decides).
   report.condition_estimate = 1.0 / std::max(std::min(run.rcond, condensed.rcond()), 1e-300);
   report.stop_cause =
-      stop_cause(c, statuses, run, report, nw == 0 ? report.iterations >= max_iterations : capped, adrift);
+      stop_cause(problem, c, statuses, run, report, nw == 0 ? report.iterations >= max_iterations : capped, adrift);
   report.converged = report.stop_cause == StopCause::Converged;
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream msg;

@@ -185,7 +185,7 @@ MixedSystem::Answer MixedSystem::solve(const std::vector<Active>& statuses) {
   answer.singular = singular_ = !lu_.factor(A_);
   answer.rcond = lu_.rcond();
   factored_ = true;
-  const Eigen::VectorXd x = lu_.solve(rhs);
+  const Eigen::VectorXd x = lu_.solve(rhs, prove_round_off_ ? &answer.at_round_off : nullptr);
   const Eigen::VectorXd y = x.head(ny_);
   answer.u = P_ * y;
   answer.y = y;
@@ -207,12 +207,27 @@ MixedSystem::Answer MixedSystem::solve_again(const Eigen::VectorXd& body_forces,
   Answer answer;
   answer.singular = singular_;
   answer.rcond = lu_.rcond();
-  const Eigen::VectorXd x = lu_.solve(rhs);
+  const Eigen::VectorXd x = lu_.solve(rhs, prove_round_off_ ? &answer.at_round_off : nullptr);
   const Eigen::VectorXd y = x.head(ny_);
   answer.u = P_ * y;
   answer.r = x.tail(m2);
   for (const auto& [offset, size] : bands_) answer.band_z.push_back(y.segment(offset, size));
   return answer;
+}
+
+MixedSystem::NearNull MixedSystem::near_null() const {
+  if (!factored_) throw std::logic_error("MixedSystem::near_null before any solve()");
+  NearNull out;
+  if (singular_) {  // no factors to iterate with: singular to working precision
+    out.condition = 1e300;
+    return out;
+  }
+  const SparseLU::NearNull v = lu_.near_null();
+  out.condition = v.condition;
+  if (v.x.size() == 0) return out;
+  out.u = P_ * v.x.head(ny_);
+  out.r = v.x.tail(2 * problem_.num_nodes());
+  return out;
 }
 
 }  // namespace thinlayer

@@ -33,10 +33,26 @@ class MixedSystem {
     Eigen::VectorXd y;                  // the system's own unknowns (y above)
     bool singular = false;              // the statuses leave a body free (factorisation failed)
     double rcond = 0;                   // the LU's reciprocal condition estimate
+    // With prove_round_off(true): refined in extended precision until a correction was below
+    // double's rounding (SparseLU::solve) — the premise of a round-off floor. False otherwise.
+    bool at_round_off = false;
   };
   // One sparse LU with these statuses (one per node of the problem, as the active-set methods
   // name them).
   Answer solve(const std::vector<Active>& statuses);
+
+  // Refine every solve on until its answer is the exact one to double's rounding, and say so
+  // (Answer::at_round_off): the proof a linear solve's round-off floor needs (core/solvers/
+  // stop_verdict.h), a few more substitutions where the condition is high. Off by default.
+  void prove_round_off(bool on) { prove_round_off_ = on; }
+
+  // What the last solve()'s system nearly leaves free (SparseLU::near_null): a lower bound of its
+  // condition number and that motion, as displacements of the free DOFs and interface forces.
+  struct NearNull {
+    double condition = 0;
+    Eigen::VectorXd u, r;
+  };
+  NearNull near_null() const;
 
   // The unknowns y of the system: each free DOF outside a layer band nodally, then each band in
   // its column basis. The index in y of band b's column-i translation, component c (0: x, 1: y).
@@ -94,6 +110,7 @@ class MixedSystem {
   SparseLU lu_;
   std::vector<std::pair<bool, bool>> jump_rows_;  // of the last solve(): which rows are equations d = ...
   bool factored_ = false;
+  bool prove_round_off_ = false;
   bool singular_ = false;
 };
 

@@ -12,6 +12,7 @@
 #include "core/linalg/factor_memory.h"
 #include "core/solvers/bonded_solve.h"
 #include "core/solvers/mixed_system.h"
+#include "core/solvers/stop_verdict.h"
 
 namespace thinlayer {
 
@@ -53,8 +54,8 @@ std::vector<std::array<int, 2>> floating_sides(const ContactProblem& problem) {
 bool holds(Active a) { return a == Active::Stick || a == Active::Bonded; }
 bool slides(Active a) { return a == Active::SlidePositive || a == Active::SlideNegative; }
 
-// A body held by friction alone, below what friction can hold (load_path.h refuses a load above
-// f x its normal force before the solve), keeps at least one stuck node at its solution: were every
+// A body held by friction alone, below what friction can hold (a load statics proves above it is
+// refused before the solve, cases/scene/load_path.h), keeps at least one stuck node at its solution: were every
 // node of its faces sliding, its friction forces f|r_N| would balance its load exactly — the
 // capacity. A guess that lets every node of such a body slide is therefore wrong, and it leaves the
 // body's translation along its faces free (a singular step: the Newton iterates of a double lap with
@@ -84,14 +85,30 @@ void keep_a_hold(const ContactProblem& problem, const Condensed& rules, const st
   }
 }
 
-StopCause stop_cause(const SparseNewtonRun& run, bool capped) {
+// The one rule (core/solvers/stop_verdict.h): where the statuses settled, the best answer is one
+// linear system's (that of the last factorisation) and the verdict reads its evidence; otherwise the
+// iteration's own cause, and no round-off floor.
+StopVerdict stop_cause(const ContactProblem& problem, const SparseNewtonRun& run, bool capped, bool at_round_off,
+                       bool best_is_last, const MixedSystem& mixed) {
   const SolveReport& r = run.report;
-  if (!std::isfinite(r.residual.value())) return run.singular ? StopCause::Singular : StopCause::NonFinite;
-  if (r.residual.value() <= r.tolerance) return StopCause::Converged;
-  if (r.residual.value() <= r.residual.floor()) return StopCause::RoundOffFloor;
-  if (run.singular) return StopCause::Singular;
-  if (run.settled) return StopCause::LossOfAccuracy;
-  return capped || run.cycled ? StopCause::IterationCap : StopCause::LossOfAccuracy;
+  if (!std::isfinite(r.residual.value())) {
+    StopVerdict v;
+    v.cause = run.singular ? StopCause::Singular : StopCause::NonFinite;
+    v.why = to_string(v.cause);
+    return v;
+  }
+  LinearEvidence evidence;
+  evidence.condition = r.condition_estimate;
+  if (run.settled && best_is_last && !(r.residual.value() <= r.tolerance)) {
+    evidence.linear = true;
+    evidence.at_round_off = at_round_off;
+    const MixedSystem::NearNull near = mixed.near_null();
+    evidence.condition = near.condition;
+    evidence.free_motion = near.u;
+  }
+  const StopCause iteration = run.singular ? StopCause::Singular
+                              : capped || run.cycled ? StopCause::IterationCap : StopCause::LossOfAccuracy;
+  return stop_verdict(problem, r.u, r.r, r.residual, r.tolerance, evidence, iteration);
 }
 
 }  // namespace
@@ -130,8 +147,10 @@ SparseNewtonRun solve_sparse_newton(const ContactProblem& problem, const SolverO
   // (pressures unequal on its two faces); GetFEM's generalized Newton fails on the same scenes.
   Eigen::VectorXd x_u, x_r;
   double x_residual = std::numeric_limits<double>::infinity();
+  bool best_at_round_off = false, best_is_last = false;
   int steps = 0;
   for (; steps < max_steps; ++steps) {
+    best_is_last = false;
     const MixedSystem::Answer a = mixed.solve(statuses);
     if (a.singular || !a.u.allFinite() || !a.r.allFinite()) {
       run.singular = true;
@@ -145,6 +164,8 @@ SparseNewtonRun solve_sparse_newton(const ContactProblem& problem, const SolverO
       best.r = a.r;
       best.residual = residual;
       best.condition_estimate = 1.0 / std::max(a.rcond, 1e-300);
+      best_at_round_off = a.at_round_off;
+      best_is_last = true;
     }
     if (residual.value() <= options.tolerance) {
       ++steps;
@@ -195,14 +216,17 @@ SparseNewtonRun solve_sparse_newton(const ContactProblem& problem, const SolverO
     statuses = std::move(next);
   }
   best.iterations = steps;
-  best.stop_cause = stop_cause(run, steps >= max_steps);
-  best.converged = best.stop_cause == StopCause::Converged;
+  // The settled statuses' answer is the last factorisation's; the verdict reads it only if it is the best.
+  const StopVerdict verdict = stop_cause(problem, run, steps >= max_steps, best_is_last && best_at_round_off,
+                                         best_is_last, mixed);
+  best.stop_cause = verdict.cause;
+  best.converged = verdict.converged;
   best.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream msg;
   msg << (best.converged ? "converged" : "NOT converged") << " after " << steps
       << " semismooth Newton steps on the whole sparse system from the bonded solve, residual " << best.residual.value()
       << " (tolerance " << options.tolerance << ")";
-  if (!best.converged) msg << ": " << to_string(best.stop_cause) << (run.cycled ? " (a status set came back)" : "");
+  if (!best.converged) msg << ": " << verdict.why << (run.cycled ? " (a status set came back)" : "");
   best.message = msg.str();
   return run;
 }

@@ -3,6 +3,7 @@
 #include "cases/answer_admissibility.h"
 #include "cases/film_admissibility.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -25,6 +26,7 @@
 #include "studies/drivers/scene_solve_output.h"
 #include "studies/parallel/process_group.h"
 #include "studies/tools/format.h"
+#include "studies/tools/scene_distance.h"
 
 namespace thinlayer {
 
@@ -92,7 +94,6 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
   SceneSolveInput in;
   std::vector<InputFile> inputs;
   std::unique_ptr<SceneFileBulk> bulk;
-  LoadPath load_path;
   try {
     in = parse_solve(command, args);
     RunPhase reading("reading the scene file " + in.scene);
@@ -109,12 +110,12 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     RunPhase meshing("meshing and checking the scene " + in.scene);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     check_scene_eps(*bulk, in.mode, in.eps);
-    // SPEC 1.3: a load with no path is bad input; a joint friction alone cannot hold fails (exit 1),
-    // both found before any solve.
-    load_path = scene_load_path(*bulk, in.mode, in.eps);
+    // SPEC 1.3: a load with no path is bad input; a joint that statics proves friction cannot hold
+    // fails (exit 1); both proven before any solve, nothing else refused.
+    const LoadPath load_path = scene_load_path(*bulk, in.mode, in.eps);
     if (!load_path.no_path.empty()) throw std::invalid_argument(load_path.no_path);
-    if (const FrictionHold* over = load_path.exceeded()) {
-      print_message("solve", friction_line(*over, bulk->spec().units.force) + "; nothing solved");
+    if (!load_path.friction_overload.empty()) {
+      print_message("solve", load_path.friction_overload + "; nothing solved");
       return 1;
     }
   } catch (const std::invalid_argument& e) {
@@ -139,7 +140,11 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (in.mode == "limit") cost = classification_cost(*bulk, s, in.eps, in.options);
     if (!in.json) print_scene_solve(*bulk, in.mode, in.eps, s);
     if (!in.json && cost.differs) std::printf("  %s\n", classification_cost_line(*bulk, s, cost).c_str());
-    if (!in.json && estimate) print_limit_error_estimate(*estimate);
+    if (!in.json && estimate) {
+      const std::vector<ReactionComponent> reactions = reaction_components(bulk->model());
+      const bool fixed = std::all_of(reactions.begin(), reactions.end(), [](const ReactionComponent& c) { return c.determinate; });
+      print_limit_error_estimate(*estimate, fixed ? determinate_reactions(reactions) : "");
+    }
     phase.emplace("writing " + in.out);
     if (!in.out.empty()) write_results(in.out, s, *bulk, {inputs, in.force}, estimate ? &*estimate : nullptr);
     phase.emplace("writing " + in.vtu);
@@ -154,11 +159,12 @@ int command_solve_scene(const CLI::App& command, const SolveArgs& args) {
     if (const std::string w = no_load_warning(s); !w.empty()) print_message("solve", w);
     if (const std::string w = film_warning(s.record); !w.empty()) print_message("solve", w);
     if (const std::string w = displacement_warning_line(s.record); !w.empty()) print_message("solve", w);
+    if (const std::string w = strain_warning_line(s.record); !w.empty()) print_message("solve", w);
     if (const std::string w = limit_slip_warning_line(s.record); !w.empty()) print_message("solve", w);
     if (!s.report.converged) {
       print_message("solve", s.report.message);
-      // What friction alone had to hold, where it did (the capacity was estimated within the load).
-      for (const FrictionHold& h : load_path.friction)
+      // What friction alone had to hold, where it did: an estimate that explains the failure.
+      for (const FrictionHold& h : scene_friction_estimate(*bulk, in.mode, in.eps))
         print_message("solve", friction_line(h, bulk->spec().units.force));
       return 1;
     }
@@ -225,12 +231,13 @@ int command_study_scene(const std::string& study, const CLI::App& c, const Study
     RunPhase meshing("meshing and checking the scene " + scene);
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
     for (double e : scene_study_grid(*bulk, options)) check_layer_mode(*bulk, e);
-    // SPEC 1.3: a load with no path is bad input; a joint friction alone cannot hold fails (exit 1);
-    // judged on the limit mode (the glue's own thickness), before any of the study's solves.
+    if (options.peak_distance > 0) check_peak_distance(*bulk, options.peak_distance);  // within half a bondline
+    // SPEC 1.3: a load with no path is bad input; a joint statics proves friction cannot hold fails
+    // (exit 1); judged on the limit mode (the glue's own thickness), before any of the study's solves.
     const LoadPath path = scene_load_path(*bulk, "limit", 0.0);
     if (!path.no_path.empty()) throw std::invalid_argument(path.no_path);
-    if (const FrictionHold* over = path.exceeded()) {
-      print_message("study", friction_line(*over, bulk->spec().units.force) + "; nothing solved");
+    if (!path.friction_overload.empty()) {
+      print_message("study", path.friction_overload + "; nothing solved");
       return 1;
     }
   } catch (const std::exception& e) {

@@ -13,6 +13,7 @@
 #include "studies/cli/report_runner.h"
 #include "studies/cli/results_file.h"
 #include "studies/drivers/validity_map.h"
+#include "studies/tools/scene_distance.h"
 #include "studies/parallel/process_group.h"
 #include "studies/parallel/spread_command.h"
 #include "studies/tools/run_phase.h"
@@ -78,6 +79,7 @@ int command_study_validity_map(const CLI::App& c, const StudyArgs& a) {
       check_report_folder(out_dir + "/report");
     }
     bulk = std::make_unique<SceneFileBulk>(std::move(spec));
+    if (options.peak_distance > 0) check_peak_distance(*bulk, options.peak_distance);  // within half a bondline
   } catch (const std::exception& e) {
     if (is_root()) print_message("study", e.what());
     return 2;

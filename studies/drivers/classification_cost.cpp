@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "cases/scene/load_path.h"
+#include "core/solvers/stop_verdict.h"
 #include "studies/tools/bondline_fields.h"
 #include "studies/tools/error_norms.h"
 #include "studies/tools/scene_distance.h"
@@ -30,9 +32,16 @@ ClassificationCost classification_cost(SceneFileBulk& bulk, const SceneFileScene
   for (const SceneBondline& b : scene.bondlines) cost.differs = cost.differs || !same_law(b.law, b.classified);
   if (!cost.differs) return cost;
   try {
+    // What statics proves first (cases/scene/load_path.h): a rule's law with no stiffness where the
+    // load needs one leaves it no path, and its solve would only meet a singular system.
+    const LoadPath path = check_load_path(bulk.model(), bulk.limit_interfaces(eps, true, true), bulk.spec().units.force);
+    if (!path.no_path.empty() || !path.friction_overload.empty()) {
+      cost.not_computed = "under that law, " + (path.no_path.empty() ? path.friction_overload : path.no_path);
+      return cost;
+    }
     const SceneFileScene rule = solve_scene_file_limit(bulk, SolverKind::Fast, options, eps, default_status_tolerance,
                                                        /*classified=*/true);
-    if (!rule.report.converged) {
+    if (!usable(rule.report)) {  // one rule (core/solvers/stop_verdict.h): no cost from an unusable answer
       cost.not_computed = "its solve did not converge (" + rule.report.message + ")";
       return cost;
     }

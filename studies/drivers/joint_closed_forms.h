@@ -22,6 +22,12 @@ struct ClosedFormCurves {
   std::vector<double> s;   // arc length along the bondline, mm (as bondline_fields)
   std::vector<double> volkersen_shear, gr_shear, gr_peel;  // stress unit, σ_T's sign; empty: not drawn
   double P = 0, length = 0, omega = 0, k = 0, beta = 0, lambda = 0;  // N/mm (force unit per mm), mm, 1/mm, 1, 1, 1
+  // Goland–Reissner's bending factors: k (drawn: the mean of both ends') and k' from linear statics
+  // of the joint's own supports (studies/tools/lap_beam.h), each end's k, and GR's own geometrically
+  // nonlinear k at this P (not the model's: shown second).
+  double k_ends[2] = {0, 0}, k_prime = 0, k_nonlinear = 0;
+  std::string start, end;   // what lies beyond each end of the bondline (s = 0, s = its length)
+  std::string gr_why_not;   // where Goland-Reissner is not drawn
   double t_1 = 0, t_2 = 0;  // mm, the two adherents' thicknesses carrying the bondline's force
 };
 

@@ -1,5 +1,7 @@
 #include "studies/drivers/scene_file_study.h"
 
+#include "core/solvers/stop_verdict.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -13,6 +15,7 @@
 
 #include "core/io/reference_tables.h"
 #include "core/io/scene_id_number.h"
+#include "core/solvers/stop_verdict.h"
 #include "studies/drivers/scene_study_output.h"
 #include "studies/tools/bisection.h"
 #include "studies/tools/cauchy_fit.h"
@@ -110,12 +113,27 @@ Solved solve_pairs(SceneFileBulk& bulk, const std::vector<double>& eps, const Sc
   return s;
 }
 
+// One rule (core/solvers/stop_verdict.h): distances only between answers whose numbers may be used;
+// otherwise every distance is NaN — never fitted, never bracketed — and `why` says what stopped.
+std::string not_usable(const SceneFileScene& layer, const SceneFileScene& limit) {
+  std::string why;
+  if (!usable(layer.report)) why += "layer mode: " + layer.report.message;
+  if (!usable(limit.report)) why += (why.empty() ? "" : "; ") + std::string("limit mode: ") + limit.report.message;
+  return why;
+}
+
+void set_not_used(std::map<std::string, double>& distances) {
+  for (auto& [q, e] : distances) e = std::nan("");
+}
+
 SceneSample sample_of(const SceneFileBulk& bulk, double eps, const SceneFileScene& layer, const SceneFileScene& limit,
                       double d) {
   SceneSample s;
   s.eps = eps;
   s.e = scene_distance(bulk, layer.record, limit.record, &s.status_diff);
   s.verdict = verdict_distance(bulk, layer.record, limit.record, d);
+  s.not_used = not_usable(layer, limit);
+  if (!s.not_used.empty()) set_not_used(s.e), set_not_used(s.verdict);
   s.layer_ends = peaks_at_distance(bulk, layer.record, d);
   s.limit_ends = peaks_at_distance(bulk, limit.record, d);
   s.converged = layer.report.converged && limit.report.converged;
@@ -143,10 +161,13 @@ void run_validity(SceneFileBulk& bulk, const SceneFileScene* shared_limit, const
     Bracket bracket;
     bool bisect = false;
   };
-  std::vector<SceneSample> by_eps = r.samples;
-  std::sort(by_eps.begin(), by_eps.end(), [](const auto& a, const auto& b) { return a.eps < b.eps; });
+  std::vector<SceneSample> by_eps;  // the samples whose numbers may be used, thinnest first
   bool all_converged = r.limit_converged;
-  for (const SceneSample& s : by_eps) all_converged = all_converged && s.converged;
+  for (const SceneSample& s : r.samples) {
+    all_converged = all_converged && s.converged;
+    if (s.not_used.empty()) by_eps.push_back(s);
+  }
+  std::sort(by_eps.begin(), by_eps.end(), [](const auto& a, const auto& b) { return a.eps < b.eps; });
   std::vector<Job> jobs;
   for (const std::string& q : verdict_quantities())
     for (double tau : options.taus) {
@@ -158,7 +179,15 @@ void run_validity(SceneFileBulk& bulk, const SceneFileScene* shared_limit, const
       // (a distance that dips back under τ above a sample beyond it is no validity range).
       int within = -1;
       while (within + 1 < static_cast<int>(by_eps.size()) && by_eps[within + 1].verdict.at(q) <= tau) ++within;
-      if (within + 1 == static_cast<int>(by_eps.size())) {
+      const bool judged = std::any_of(by_eps.begin(), by_eps.end(), [&](const SceneSample& s) { return !std::isnan(s.verdict.at(q)); });
+      if (by_eps.empty()) {
+        j.row.status = "not_judged";
+        j.row.why_not_judged = "no sample's numbers may be used (none converged nor stopped at a proven floor)";
+      } else if (!judged) {  // every reaction component is fixed by statics (scene_distance.h)
+        j.row.status = "not_judged";
+        j.row.why_not_judged = "statically determinate (" + determinate_reactions(reaction_components(bulk.model())) +
+                               "): the same in every model";
+      } else if (within + 1 == static_cast<int>(by_eps.size())) {
         j.row.status = "at_least";
         j.row.eps_max = by_eps.back().eps;
         j.row.error_at_eps_max = by_eps.back().verdict.at(q);
@@ -189,16 +218,20 @@ void run_validity(SceneFileBulk& bulk, const SceneFileScene* shared_limit, const
       const std::size_t k = static_cast<std::size_t>(std::find(round.begin(), round.end(), mid) - round.begin());
       const SceneFileScene& limit = shared_limit ? *shared_limit : solved.limits[k];
       const SceneFileScene& s = solved.layers[k];
+      j.row.converged = j.row.converged && s.report.converged && limit.report.converged;
+      if (!not_usable(s, limit).empty()) {  // the midpoint's numbers may not be used: the bracket stays
+        j.bisect = false;
+        continue;
+      }
       const double e = verdict_distance(bulk, s.record, limit.record, r.peak_distance).at(j.row.quantity);
       j.bracket = narrow(j.bracket, mid, e, j.row.tau);
-      j.row.converged = j.row.converged && s.report.converged && limit.report.converged;
       ++j.row.bisection_steps;
     }
     for (auto& s : solved.layers) extra.push_back(std::move(s));
     for (auto& s : solved.limits) extra.push_back(std::move(s));
   }
   for (Job& j : jobs) {
-    if (j.bisect) {
+    if (j.row.status == "found") {
       j.row.eps_max = j.bracket.eps_within;
       j.row.error_at_eps_max = j.bracket.error_within;
       j.row.eps_beyond = j.bracket.eps_beyond;
@@ -233,6 +266,8 @@ void run_floor(const SceneFileBulk& bulk, double eps, const SceneStudyOptions& o
     row.layer_ends = peaks_at_distance(*s.bulk, s.layer.record, r.peak_distance);
     row.limit_ends = peaks_at_distance(*s.bulk, s.limit.record, r.peak_distance);
     row.converged = s.layer.report.converged && s.limit.report.converged;
+    row.not_used = not_usable(s.layer, s.limit);
+    if (!row.not_used.empty()) set_not_used(row.e), set_not_used(row.verdict);
     row.layer_id = s.layer.record.id;
     row.limit_id = s.limit.record.id;
     add_peaks(*s.bulk, s.limit, row.h, r.peaks);
@@ -388,7 +423,8 @@ SceneStudyResult run_scene_study(SceneFileBulk& bulk, const SceneStudyOptions& o
   }
   // The layer model's own differences along ε: the mesh floor cancels (SPEC §3 S2, item 1).
   for (std::size_t i = 0; i + 1 < eps.size(); ++i) {
-    const auto d = scene_distance(bulk, solved.layers[i].record, solved.layers[i + 1].record);
+    auto d = scene_distance(bulk, solved.layers[i].record, solved.layers[i + 1].record);
+    if (!usable(solved.layers[i].report) || !usable(solved.layers[i + 1].report)) set_not_used(d);
     for (const std::string& q : scene_distance_quantities()) r.cauchy[q].push_back(d.at(q));
   }
   for (const std::string& q : scene_distance_quantities()) {

@@ -59,6 +59,7 @@ struct SceneSample {
   EndStresses layer_ends, limit_ends;     // the peaks at d and at the corners, both modes
   int status_diff = 0;              // S nodes whose combined status differs from the limit's
   bool converged = false;           // the layer scene (and its limit scene)
+  std::string not_used;             // why its distances are not used (NaN): a scene neither converged nor at a proven floor
   double residual = 0, time_s = 0;
   int iterations = 0;
   std::string id, limit_id;
@@ -67,10 +68,11 @@ struct SceneSample {
 struct SceneValidityRow {
   std::string quantity = "u";  // a verdict quantity (studies/tools/scene_distance.h)
   double tau = 0;
-  std::string status;  // found | at_least | below_range (as studies/drivers/validity_study.h)
+  std::string status;  // found | at_least | below_range (as studies/drivers/validity_study.h) | not_judged (no usable sample)
   double eps_max = 0, error_at_eps_max = 0, eps_beyond = 0;
   int bisection_steps = 0;
   bool converged = true;
+  std::string why_not_judged;  // status not_judged: why (statically determinate, or no usable sample)
 };
 
 // The mesh floor at one element size along the bondlines.
@@ -82,6 +84,7 @@ struct SceneFloorRow {
   std::map<std::string, double> verdict;  // the verdict quantities' distances at h
   EndStresses layer_ends, limit_ends;     // the peaks at d and at the corners at h, both modes
   bool converged = false;
+  std::string not_used;  // why its distances are not used (NaN), as SceneSample's
   std::string layer_id, limit_id;
 };
 

@@ -44,7 +44,9 @@ nlohmann::json film_json(const SceneRecord& record);
 
 // SPEC §3 S6 in limit mode: "the limit law is within X % of a layer of thickness t" for the
 // reactions, the adherents' displacements, σ_N and σ_T (or why it was not computed).
-void print_limit_error_estimate(const LimitErrorEstimate& estimate);
+// `reactions_fixed`: where every reaction component is fixed by statics, which ("clamp x"): the
+// reactions' line then says "not judged" (studies/tools/scene_distance.h, reaction_components).
+void print_limit_error_estimate(const LimitErrorEstimate& estimate, const std::string& reactions_fixed = "");
 // --json's "limit_error_estimate": {eps, u, reactions, sigma_N, sigma_T} (relative, 1 = 100 %), or
 // {"computed": false, "note": ...}.
 nlohmann::json limit_error_estimate_json(const LimitErrorEstimate& estimate);

@@ -1,5 +1,6 @@
 #include "studies/drivers/scene_study_output.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -29,6 +30,7 @@ const std::map<std::string, std::string>& quantity_descriptions() {
 std::string verdict_text(const SceneValidityRow& v) {
   if (v.status == "at_least") return ">= " + sci(v.eps_max, 1);
   if (v.status == "below_range") return "< " + sci(v.eps_max, 1);
+  if (v.status == "not_judged") return "-";
   return sci(v.eps_max, 2);
 }
 
@@ -77,6 +79,7 @@ void print_scene_study(const SceneFileBulk& bulk, const SceneStudyResult& r, con
     for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", sci(s.e.at(q), 2).c_str());
     std::printf(" %5d %5d %9s %8.2f%s\n", s.status_diff, s.iterations, sci(s.residual, 1).c_str(), s.time_s,
                 s.converged ? "" : "  NOT converged");
+    if (!s.not_used.empty()) std::printf("    not used (its distances are not reported): %s\n", s.not_used.c_str());
   }
   print_fit_rows(scene_distance_quantities(), r.fit, r.floor_fit, 8, 10);
   std::printf("  (the verdict's quantities below: the reactions, u, and the peaks at d = %g mm from the bondline ends)\n",
@@ -112,6 +115,7 @@ void print_scene_floor(const SceneStudyResult& r) {
     std::printf("  %-8g %6d", row.h, row.S_nodes);
     for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", sci(row.e.at(q), 2).c_str());
     std::printf("%s\n", row.converged ? "" : "  NOT converged");
+    if (!row.not_used.empty()) std::printf("    not used (its distances are not reported): %s\n", row.not_used.c_str());
   }
   std::printf("  %-15s", "rate in h");
   for (const std::string& q : scene_distance_quantities()) std::printf(" %10s", rate_text(r.floor_rate.at(q)).c_str());
@@ -119,10 +123,11 @@ void print_scene_floor(const SceneStudyResult& r) {
 }
 
 std::string verdict_label(const std::string& q, double d) {
-  if (q == "reactions") return "reactions";
+  if (q == "reactions") return "reactions (those that can differ, each)";
   if (q == "u") return "adherents' displacements";
-  if (q == "peel_at_d") return "peak peel at " + plain(d) + " mm from the ends";
-  if (q == "shear_at_d") return "peak shear at " + plain(d) + " mm from the ends";
+  // On the quantity's scale on the bondlines (scene_distance.h), never pointwise.
+  if (q == "peel_at_d") return "peel at " + plain(d) + " mm from the ends, on max|sigma_N|";
+  if (q == "shear_at_d") return "shear at " + plain(d) + " mm from the ends, on max|sigma_T|";
   return q;
 }
 
@@ -151,8 +156,17 @@ void print_scene_ends(const SceneStudyResult& r) {
       std::printf("  %s: P = %.4g, overlap %.4g mm; peak shear Volkersen %.4g", c.bondline.empty() ? "S" : c.bondline.c_str(), c.P,
                   c.length, peak(c.volkersen_shear));
       if (!c.gr_shear.empty())
-        std::printf(", Goland-Reissner %.4g (k %.3g), peak peel Goland-Reissner %.4g", peak(c.gr_shear), c.k,
-                    *std::max_element(c.gr_peel.begin(), c.gr_peel.end()));
+        std::printf(", Goland-Reissner %.4g, peak peel Goland-Reissner %.4g\n    Goland-Reissner's bending factor from "
+                    "linear statics of the joint's supports: k %.3g (%.3g at s = 0, %.3g at its far end%s; k' %.3g); "
+                    "GR's own geometrically nonlinear k at this P, %.3g, is not the linear model's",
+                    peak(c.gr_shear), *std::max_element(c.gr_peel.begin(), c.gr_peel.end()), c.k, c.k_ends[0], c.k_ends[1],
+                    std::abs(c.k_ends[0] - c.k_ends[1]) > 0.01 * std::abs(c.k)
+                        ? ": the supports are not symmetric, the closed form draws their mean"
+                        : "",
+                    c.k_prime, c.k_nonlinear);
+      else if (!c.gr_why_not.empty())
+        std::printf("\n    %s", c.gr_why_not.c_str());
+      if (!c.start.empty()) std::printf("\n    s = 0 at %s; s = %.4g mm at %s", c.start.c_str(), c.length, c.end.c_str());
       std::printf("\n");
     }
     std::printf("  computed at eps %g mm (the corners): shear limit %.4g, layer %.4g; peel limit %.4g, layer %.4g\n",
@@ -184,14 +198,18 @@ void print_scene_validity(const SceneStudyResult& r, int steps) {
     bool converged = true;
     for (const SceneValidityRow& v : r.validity) {
       if (v.quantity != q) continue;
+      if (v.status == "not_judged") {
+        line = "not judged: " + v.why_not_judged;
+        continue;
+      }
       line += (line.empty() ? "" : "; ") + std::string("within ") + plain(100 * v.tau) + " % up to eps " + verdict_text(v) +
               " (" + sci(v.error_at_eps_max, 1) + ")";
       converged = converged && v.converged;
     }
-    std::printf("  %-40s %s%s\n", (verdict_label(q, r.peak_distance) + ":").c_str(), line.c_str(),
+    std::printf("  %-48s %s%s\n", (verdict_label(q, r.peak_distance) + ":").c_str(), line.c_str(),
                 converged ? "" : "  (a scene did not converge)");
-    if (!r.floor.empty())  // the same distance on the finer meshes: where it moves, the verdict measures the mesh too
-      std::printf("  %-40s at eps %g mm: %s at h %g mm, %s at h %g mm\n", "", r.floor.front().eps,
+    if (!r.floor.empty() && !std::isnan(r.floor.front().verdict.at(q)))  // the same distance on the finer meshes: where it moves, the verdict measures the mesh too
+      std::printf("  %-48s at eps %g mm: %s at h %g mm, %s at h %g mm\n", "", r.floor.front().eps,
                   sci(r.floor.front().verdict.at(q), 2).c_str(), r.floor.front().h, sci(r.floor.back().verdict.at(q), 2).c_str(),
                   r.floor.back().h);
   }
@@ -438,12 +456,13 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
   if (!r.validity.empty()) {
     const std::string v = g + "/validity";
     std::vector<double> tau, eps_max, error, beyond;
-    std::vector<std::string> status, quantity;
+    std::vector<std::string> status, quantity, why_not;
     std::vector<int> steps, vconv;
     for (const SceneValidityRow& row : r.validity) {
       quantity.push_back(row.quantity);
       tau.push_back(row.tau);
       status.push_back(row.status);
+      why_not.push_back(row.why_not_judged);
       eps_max.push_back(row.eps_max);
       error.push_back(row.error_at_eps_max);
       beyond.push_back(row.eps_beyond);
@@ -454,7 +473,9 @@ void write_scene_study(H5Writer& out, const SceneFileBulk& bulk, const SceneStud
                                                "peel_at_d, shear_at_d (the peaks at peak_distance from the ends)");
     out.described_dataset(v + "/tau", tau, "1 (relative)", "the tolerance on the quantity's distance");
     out.described_dataset(v + "/status", status, "", "found: by bisection; at_least: within tau at every sample (a lower bound); "
-                                          "below_range: not within tau even at the thinnest sample");
+                                          "below_range: not within tau even at the thinnest sample; not_judged: see why_not_judged");
+    out.described_dataset(v + "/why_not_judged", why_not, "", "status not_judged: why (statically determinate, or no usable "
+                                                  "sample); else empty");
     out.described_dataset(v + "/eps_max", eps_max, "mm", "the largest eps at which the limit law stays within tau (the quantity)");
     out.described_dataset(v + "/error_at_eps_max", error, "1 (relative)", "the quantity's distance at eps_max");
     out.described_dataset(v + "/eps_beyond", beyond, "mm", "the smallest eps known beyond tau (status found)");

@@ -81,6 +81,13 @@ void print_validity_map(const ValidityMapResult& r, const ValidityMapOptions& o)
         std::printf("\n");
       }
     }
+  // Every cell that failed, and why (the verdict of each scene: core/solvers/stop_verdict.h).
+  for (const MapCell& c : r.cells) {
+    const std::string why = c.coarse.failure + c.fine.failure;
+    if (why.empty()) continue;
+    std::printf("  x at t/L %s, E_g/E_a %s, nu_g %s: %s\n", sci(c.spec.t_over_L, 1).c_str(), sci(c.spec.E_ratio, 1).c_str(),
+                plain(c.spec.nu).c_str(), why.substr(0, why.size() - 2).c_str());
+  }
   // SPEC 3 S6 judged on the map.
   std::printf("\n  SPEC 3 S6, the limit-mode estimate against the measured distance (at %s, cells above the mesh floor):\n",
               r.h_fine > 0 ? "h/2" : "h");
@@ -94,15 +101,24 @@ void print_validity_map(const ValidityMapResult& r, const ValidityMapOptions& o)
   }
   print_order_one(r, o);
   // The paper's rule.
-  int degenerate = 0;
+  int degenerate = 0, measured = 0;
   double worst = 0;
   for (const MapCell& c : r.cells)
     if (c.rule_solved) {
       ++degenerate;
-      if (c.rule_measured.count("u")) worst = std::max(worst, c.rule_measured.at("u"));
+      if (c.rule_measured.count("u")) worst = std::max(worst, c.rule_measured.at("u")), ++measured;
     }
-  std::printf("\n  The paper's 3 %% / 30x rule picks a 0 or inf law at %d of %zu cells (its law against the layer: u up to %s %%)\n",
-              degenerate, r.cells.size(), significant(100 * worst, 3).c_str());
+  // Only the cells whose rule's answer is usable give a distance (none: none is claimed).
+  const std::string cost = measured == 0 ? "no usable answer of its law"
+                                         : "its law against the layer: u up to " + significant(100 * worst, 3) + " % at " +
+                                               std::to_string(measured) + " of them";
+  std::printf("\n  The paper's 3 %% / 30x rule picks a 0 or inf law at %d of %zu cells (%s)\n", degenerate, r.cells.size(),
+              cost.c_str());
+  for (const MapCell& c : r.cells)
+    if (c.rule_solved && !c.rule_measured.count("u"))
+      std::printf("    no distance at t/L %s, E_g/E_a %s, nu_g %s: %s\n", sci(c.spec.t_over_L, 1).c_str(),
+                  sci(c.spec.E_ratio, 1).c_str(), plain(c.spec.nu).c_str(),
+                  c.rule_failure.substr(0, c.rule_failure.size() - 2).c_str());
   int converged = 0;
   for (const MapCell& c : r.cells) converged += judge(c, "u", o.factor).converged;
   std::printf("  %zu cells, %d converged at every level; wall time %.1f s on %d rank(s) x %d thread(s)\n", r.cells.size(),

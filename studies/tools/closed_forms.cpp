@@ -14,9 +14,15 @@ double Volkersen::shear(double x) const {
   return A * std::cosh(w * x) + B * std::sinh(w * x);
 }
 
-double GolandReissner::k() const {
+double GolandReissner::k_nonlinear() const {
   const double u2 = std::sqrt(3 * P / (2 * E * t)) / t;
   return 1 / (1 + 2 * std::sqrt(2.0) * std::tanh(u2 * c));  // cosh / (cosh + 2√2 sinh)
+}
+
+double GolandReissner::k() const { return std::isnan(k_given) ? k_nonlinear() : k_given; }
+
+double GolandReissner::k_prime() const {
+  return std::isnan(k_prime_given) ? k() * (c / t) * std::sqrt(3 * P / (E * t)) : k_prime_given;
 }
 
 double GolandReissner::beta() const { return std::sqrt(8 * G * t / (E * eta)); }
@@ -31,7 +37,7 @@ double GolandReissner::shear(double x) const {
 double GolandReissner::peel(double x) const {
   const double L = lambda();
   if (L > 300) return std::numeric_limits<double>::quiet_NaN();
-  const double kk = k(), kp = kk * (c / t) * std::sqrt(3 * P / (E * t));
+  const double kk = k(), kp = k_prime();
   const double R1 = std::cosh(L) * std::sin(L) + std::sinh(L) * std::cos(L);
   const double R2 = std::sinh(L) * std::cos(L) - std::cosh(L) * std::sin(L);
   const double Delta = 0.5 * (std::sin(2 * L) + std::sinh(2 * L));

@@ -20,6 +20,8 @@
 //    an adherent whose surface strain is four times its mean (membrane plus the bending of the
 //    eccentric shear: the 1 + 3k).
 // Units: lengths mm, P force per mm of width, moduli in the stress unit; stresses in it.
+#include <limits>
+
 namespace thinlayer {
 
 struct Volkersen {
@@ -30,7 +32,13 @@ struct Volkersen {
 
 struct GolandReissner {
   double c = 0, P = 0, E = 0, t = 0, G = 0, Ea = 0, eta = 0;  // E: the adherents' E' (plane strain)
-  double k() const;            // the bending moment factor (1: no bending)
+  // The bending factors to use: k (M₀ = k P t/2) and k' (V₀ = k' P t/c). Beside a linear model they
+  // are the linear statics' of the joint's own supports (studies/tools/lap_beam.h), given here; NaN:
+  // GR's own, geometrically nonlinear in P, for symmetric pinned ends.
+  double k_given = std::numeric_limits<double>::quiet_NaN(), k_prime_given = std::numeric_limits<double>::quiet_NaN();
+  double k_nonlinear() const;  // GR's: cosh(u₂c) / (cosh(u₂c) + 2√2 sinh(u₂c)), falls as P grows
+  double k() const;            // the bending moment factor used (1: no bending)
+  double k_prime() const;      // the transverse shear factor used
   double beta() const;
   double lambda() const;
   double shear(double x) const;  // τ at x ∈ [−c, c]

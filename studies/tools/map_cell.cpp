@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/solvers/stop_verdict.h"
 #include "studies/tools/limit_error_estimate.h"
 #include "studies/tools/scene_distance.h"
 
@@ -15,10 +16,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The verdict's quantities at d and S2's stress norms, of `record` against `limit`.
+// The verdict's quantities at d and S2's stress norms, of `record` against `limit`. The reactions
+// as S6's estimate measures them (one vector, reaction_distance), so that the map compares like with
+// like; NaN (not judged) where statics fixes every component (reaction_components): their distance
+// is round-off, no estimate is judged on it.
 std::map<std::string, double> distances(const SceneFileBulk& bulk, const SceneRecord& record, const SceneRecord& limit,
                                         double d) {
   std::map<std::string, double> e = verdict_distance(bulk, record, limit, d);
+  bool fixed = true;
+  for (const ReactionComponent& c : reaction_components(bulk.model())) fixed = fixed && c.determinate;
+  e["reactions"] = fixed ? std::nan("") : reaction_distance(record, limit);
   const std::map<std::string, double> s2 = scene_distance(bulk, record, limit);
   e["sigma_N"] = s2.at("sigma_N");
   e["sigma_T"] = s2.at("sigma_T");
@@ -44,6 +51,11 @@ std::string case_letters(const std::vector<InterfaceLaw>& laws) {
   std::string s;
   for (const InterfaceLaw& l : laws) s += (s.empty() ? "" : ",") + std::string(1, l.table1_case());
   return s;
+}
+
+// "" where the solve converged; else "<which>: <why it stopped>; " (its message).
+std::string not_used_because(const SolveReport& report, const std::string& which) {
+  return report.converged ? "" : which + ": " + report.message + "; ";
 }
 
 bool same_law(const InterfaceLaw& a, const InterfaceLaw& b) {
@@ -74,14 +86,18 @@ MapCellLevel solve_level(const SceneFileBulk& meshed, const SceneSpec& spec, dou
     level.layer_residual = layer.report.residual.value();
     level.limit_residual = limit.report.residual.value();
     level.converged = layer.report.converged && limit.report.converged;
-    level.measured = distances(bulk, layer.record, limit.record, d);
-    if (limit.first_order.record) {
-      level.estimate = distances(bulk, *limit.first_order.record, limit.record, d);
-      level.order1 = distances(bulk, layer.record, *limit.first_order.record, d);
-    }
-    if (limit.first_order.interior) {
-      level.interior = distances(bulk, *limit.first_order.interior, limit.record, d);
-      level.order1_interior = distances(bulk, layer.record, *limit.first_order.interior, d);
+    level.failure = not_used_because(layer.report, "layer mode") + not_used_because(limit.report, "finite law");
+    // One rule (core/solvers/stop_verdict.h): a distance only between answers whose numbers may be used.
+    if (usable(layer.report) && usable(limit.report)) {
+      level.measured = distances(bulk, layer.record, limit.record, d);
+      if (limit.first_order.record) {
+        level.estimate = distances(bulk, *limit.first_order.record, limit.record, d);
+        level.order1 = distances(bulk, layer.record, *limit.first_order.record, d);
+      }
+      if (limit.first_order.interior) {
+        level.interior = distances(bulk, *limit.first_order.interior, limit.record, d);
+        level.order1_interior = distances(bulk, layer.record, *limit.first_order.interior, d);
+      }
     }
     cell.law_case = case_letters(laws);
     std::vector<InterfaceLaw> rules;
@@ -95,9 +111,12 @@ MapCellLevel solve_level(const SceneFileBulk& meshed, const SceneSpec& spec, dou
       const SceneFileScene classified = solve_scene_file_limit(bulk, SolverKind::Fast, options, t, default_status_tolerance, true);
       cell.rule_solved = true;
       cell.rule_converged = classified.report.converged && layer.report.converged;
+      cell.rule_failure = not_used_because(classified.report, "the rule's law") + not_used_because(layer.report, "layer mode");
       // Measured against the layer (the reference): the rule's law may carry nothing at all (a μ̄ = 0
-      // law on a joint loaded in shear), which no distance relative to its own answer could say.
-      cell.rule_measured = distances(bulk, classified.record, layer.record, d);
+      // law on a joint loaded in shear), which no distance relative to its own answer could say. Not
+      // where either answer is unusable (a μ̄ = 0 law on a force-loaded joint is singular).
+      if (usable(classified.report) && usable(layer.report))
+        cell.rule_measured = distances(bulk, classified.record, layer.record, d);
     }
   } catch (const std::exception& e) {
     level.failure = e.what();

@@ -36,7 +36,10 @@ const std::vector<std::string>& map_quantities();
 struct MapCellLevel {
   double h = 0;                 // mm, the element size along the bondlines
   bool converged = false;       // the layer and the limit scene reached the tolerance
-  std::string failure;          // a scene that could not be solved (refused, threw), or ""
+  // Why a scene of this level did not converge or could not be solved (refused, threw), each with
+  // its verdict's words (core/solvers/stop_verdict.h); "" where both converged. Distances are
+  // measured only between usable answers (converged, or a proven round-off floor).
+  std::string failure;
   double layer_residual = 0, limit_residual = 0;
   std::map<std::string, double> measured;   // the layer against the finite law
   std::map<std::string, double> estimate;   // the first-order answer against the finite law (S6)
@@ -58,6 +61,7 @@ struct MapCell {
   MapCellLevel coarse, fine;    // at h and h/2 (fine: empty, h = 0, without a mesh_size)
   // The rule's law at the finer level, where it differs from the finite law (rule_solved).
   bool rule_solved = false, rule_converged = false;
+  std::string rule_failure;     // why the rule's scene did not converge ("" if it did): no rule distance then
   std::map<std::string, double> rule_measured;  // the layer against the rule's law
 };
 

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <sstream>
 #include <stdexcept>
+
+#include <Eigen/Dense>
 
 #include "studies/tools/bondline_fields.h"
 #include "studies/tools/error_norms.h"
@@ -97,19 +101,87 @@ EndStresses peaks_at_distance(const SceneFileBulk& bulk, const SceneRecord& reco
   return out;
 }
 
+std::vector<ReactionComponent> reaction_components(const Model& model) {
+  // The unknowns: one reaction per held nodal DOF, in the order of the conditions; a DOF held twice
+  // belongs to the first condition (as LinearSystem's reactions).
+  std::set<std::pair<int, int>> seen;  // (global DOF, body)
+  std::vector<Eigen::Vector3d> columns;  // each unknown's (F_x, F_y, M / size) about the origin
+  std::vector<std::pair<std::string, int>> owner;
+  double size = 1e-300;
+  for (const Body& b : model.bodies)
+    for (int k = 0; k < b.mesh.num_nodes(); ++k) size = std::max(size, b.mesh.nodes.row(k).cwiseAbs().maxCoeff());
+  for (const DirichletCondition& c : model.dirichlet)
+    for (int node : c.nodes) {
+      if (!seen.insert({model.dof_offset(c.body) + 2 * node + c.component, c.body}).second) continue;
+      const Eigen::Vector2d x = model.bodies[c.body].mesh.nodes.row(node).transpose();
+      const Eigen::Vector2d e = Eigen::Vector2d::Unit(c.component);
+      columns.emplace_back(e.x(), e.y(), (x.x() * e.y() - x.y() * e.x()) / size);
+      owner.emplace_back(c.name, c.component);
+    }
+  Eigen::MatrixXd At(columns.size(), 3);  // Aᵀ: one row per unknown
+  for (std::size_t j = 0; j < columns.size(); ++j) At.row(static_cast<Eigen::Index>(j)) = columns[j].transpose();
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(At);
+  std::vector<ReactionComponent> out;
+  std::set<std::pair<std::string, int>> done;
+  for (const auto& key : owner) {
+    if (!done.insert(key).second) continue;
+    Eigen::VectorXd phi = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(columns.size()));
+    for (std::size_t j = 0; j < owner.size(); ++j)
+      if (owner[j] == key) phi[static_cast<Eigen::Index>(j)] = 1;
+    const Eigen::VectorXd y = qr.solve(phi);
+    out.push_back({key.first, key.second, (At * y - phi).norm() <= 1e-9 * phi.norm()});
+  }
+  return out;
+}
+
+std::string determinate_reactions(const std::vector<ReactionComponent>& components) {
+  std::string s;
+  for (const ReactionComponent& c : components)
+    if (c.determinate) s += (s.empty() ? "" : ", ") + c.group + (c.component == 0 ? " x" : " y");
+  return s;
+}
+
 std::map<std::string, double> verdict_distance(const SceneFileBulk& bulk, const SceneRecord& layer,
                                                const SceneRecord& limit, double d) {
   std::map<std::string, double> e;
-  e["reactions"] = reaction_distance(layer, limit);
+  // The reactions: the components that can differ, each on its own size (floored, see the header).
+  double largest = 0;
+  for (const auto& [group, R] : limit.reactions) largest = std::max(largest, R.cwiseAbs().maxCoeff());
+  double worst = std::nan("");
+  for (const ReactionComponent& c : reaction_components(bulk.model())) {
+    if (c.determinate || !limit.reactions.count(c.group)) continue;
+    const double b = limit.reactions.at(c.group)[c.component];
+    const double a = layer.reactions.count(c.group) ? layer.reactions.at(c.group)[c.component] : 0.0;
+    const double distance = std::abs(a - b) / std::max({std::abs(b), 1e-3 * largest, 1e-300});
+    worst = std::isnan(worst) ? distance : std::max(worst, distance);
+  }
+  e["reactions"] = worst;
   e["u"] = scene_distance(bulk, layer, limit).at("u");
   const EndStresses a = peaks_at_distance(bulk, layer, d), b = peaks_at_distance(bulk, limit, d);
-  double sigma = 0;  // the limit's largest |σ| on S
+  double peel_scale = 0, shear_scale = 0;  // the limit's largest |σ_N|, |σ_T| on every bondline
   for (const BondlineField& f : bondline_fields(bulk, limit))
-    for (std::size_t k = 0; k < f.s.size(); ++k) sigma = std::max({sigma, std::abs(f.sigma_N[k]), std::abs(f.sigma_T[k])});
-  const double floor = std::max(1e-6 * sigma, 1e-300);
-  e["peel_at_d"] = std::abs(a.peel - b.peel) / std::max(std::abs(b.peel), floor);
-  e["shear_at_d"] = std::abs(a.shear - b.shear) / std::max(std::abs(b.shear), floor);
+    for (std::size_t k = 0; k < f.s.size(); ++k) {
+      peel_scale = std::max(peel_scale, std::abs(f.sigma_N[k]));
+      shear_scale = std::max(shear_scale, std::abs(f.sigma_T[k]));
+    }
+  e["peel_at_d"] = std::abs(a.peel - b.peel) / std::max(peel_scale, 1e-300);
+  e["shear_at_d"] = std::abs(a.shear - b.shear) / std::max(shear_scale, 1e-300);
   return e;
+}
+
+void check_peak_distance(const SceneFileBulk& bulk, double d) {
+  double shortest = INFINITY;
+  for (const Interface& S : bulk.limit_interfaces(0, false)) {
+    double length = 0;
+    for (std::size_t k = 1; k < S.nodes.size(); ++k) length += (S.nodes[k].x - S.nodes[k - 1].x).norm();
+    shortest = std::min(shortest, length);
+  }
+  if (d > 0.5 * shortest) {
+    std::ostringstream s;
+    s << "--peak-distance " << d << " mm is beyond half the shortest bondline (" << shortest
+      << " mm long): a peak at d from each end would read past its middle";
+    throw std::invalid_argument(s.str());
+  }
 }
 
 }  // namespace thinlayer

@@ -45,9 +45,38 @@ const std::vector<std::string>& verdict_quantities();
 // bondlines (studies/tools/bondline_fields.h, end_stresses).
 EndStresses peaks_at_distance(const SceneFileBulk& bulk, const SceneRecord& record, double d);
 
-// Each verdict quantity's relative distance of `layer` to `limit`: the reactions and u as above;
-// a peak as |P_layer − P_limit| / max(|P_limit|, 1e-6 × the limit's largest |σ| on S).
+// Which reaction components statics fixes (SPEC §3 S2 item 4: a verdict judges only what can
+// differ). The whole joint is one free body: its support reactions R (each held nodal DOF's) and
+// its loads F balance, A R + F = 0 (force x, y and moment: 3 rows). A support group's resultant
+// component φ·R is the same in every equilibrium — whatever the joint's stiffness, in any model —
+// exactly where φ lies in the row space of A (least squares, residual below 1e-9 ‖φ‖): a
+// force-loaded joint's reaction along its pull. Those are "not judged: statically determinate"; the
+// others (a bending or sideways reaction, any reaction of a displacement-loaded joint) are judged.
+struct ReactionComponent {
+  std::string group;
+  int component = 0;        // 0: x, 1: y
+  bool determinate = false;
+};
+std::vector<ReactionComponent> reaction_components(const Model& model);
+// "clamp x, grip x" — the statically determinate ones, in words ("" if none).
+std::string determinate_reactions(const std::vector<ReactionComponent>& components);
+
+// Each verdict quantity's relative distance of `layer` to `limit`:
+//  - reactions: the worst of the components that can differ (reaction_components), each
+//    |R_layer − R_limit| / max(|R_limit|, 1e-3 × the limit's largest reaction component) — its own
+//    size, a component under a thousandth of the joint's reactions judged against that thousandth;
+//    NaN where every component is fixed by statics (not judged);
+//  - u as scene_distance's;
+//  - a peak at d, on the quantity's scale on the bondlines, never pointwise (a pointwise ratio
+//    explodes where peel crosses zero: 4950 % at d = 1 mm on a single lap):
+//    |P_layer − P_limit| / (the limit's largest |σ_N| on every bondline) for peel_at_d, and
+//    / (its largest |σ_T|) for shear_at_d — the L∞ norm of that stress on S.
 std::map<std::string, double> verdict_distance(const SceneFileBulk& bulk, const SceneRecord& layer,
                                                const SceneRecord& limit, double d);
+
+// Throws std::invalid_argument (bad input, exit 2) where d is beyond half the shortest bondline: a
+// "peak at d from each end" there reads past the bondline's middle (main labelled the corner values
+// of a 25 mm bondline "at 30 mm").
+void check_peak_distance(const SceneFileBulk& bulk, double d);
 
 }  // namespace thinlayer
