@@ -22,6 +22,7 @@
 #include <string>
 
 #include "cases/scene/scene_file_scenes.h"
+#include "tests/cli_in_folder.h"
 #include "tests/scene_folder.h"
 #include "tests/text_file.h"
 
@@ -56,14 +57,6 @@ std::string on_rollers(const SceneFolder& f, double force) {
                         {"\"supports\": [{\"group\": \"clamp\", \"u\": [0, 0]}]",
                          "\"supports\": [{\"group\": \"clamp\", \"u\": [0, 0]}, {\"group\": \"roll\", \"u\": [0, null]}]"}},
                     {{"Physical Curve(\"clamp\") = {8, 12};", "Physical Curve(\"roll\") = {8};\nPhysical Curve(\"clamp\") = {12};"}});
-}
-
-// Runs the command line; its exit status, and its stderr in `err`.
-int run(const std::string& args, const SceneFolder& f, std::string& err) {
-  const std::string path = (f.path / "err.txt").string();
-  const int raw = std::system((std::string(THINLAYER_CLI) + " " + args + " >/dev/null 2>" + path).c_str());
-  err = read_text_file(path);
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
 }  // namespace
@@ -113,7 +106,7 @@ TEST(LoadPath, AnOverloadStaticsCannotProveIsSolvedAndTheEstimateExplainsTheFail
   EXPECT_LE(holds.front().normal, 1600.0 * (1 + 1e-9));   // no more than the pressure puts on both outer strips
   EXPECT_TRUE(holds.front().exceeded());
   std::string err;
-  EXPECT_EQ(run("solve --scene " + scene + " --mode limit", f, err), 1);
+  EXPECT_EQ(run_cli("solve --scene " + scene + " --mode limit", f, err), 1);
   EXPECT_NE(err.find("NOT converged"), std::string::npos) << err;
   EXPECT_NE(err.find("exceeds f x its normal force in the joint held stuck"), std::string::npos) << err;
   EXPECT_NE(err.find("an estimate"), std::string::npos) << err;
@@ -147,7 +140,7 @@ TEST(LoadPath, APlugWithNoUndercutIsRefusedByStatics) {
         << path.friction_overload;
     SceneFolder f;
     std::string err;
-    EXPECT_EQ(run("solve --scene " + scene + " --mode " + mode + " --out " + (f.path / "r.h5").string(), f, err), 1);
+    EXPECT_EQ(run_cli("solve --scene " + scene + " --mode " + mode + " --out " + (f.path / "r.h5").string(), f, err), 1);
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     EXPECT_NE(err.find("Statics proves"), std::string::npos) << err;
     EXPECT_NE(err.find("nothing solved"), std::string::npos) << err;
@@ -186,7 +179,7 @@ TEST(LoadPath, CommandLineSaysANoPathInOneLine) {
   SceneFolder g;
   const std::string frictionless = scene_with(g, {{"\"friction\": 0.5", "\"friction\": 0"}});
   std::string text;
-  EXPECT_EQ(run("solve --scene " + frictionless, g, text), 2);
+  EXPECT_EQ(run_cli("solve --scene " + frictionless, g, text), 2);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
   EXPECT_NE(text.find("has no path to a support"), std::string::npos) << text;
 }

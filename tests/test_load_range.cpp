@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/cli_in_folder.h"
 #include "tests/edited_case.h"
 
 namespace {
@@ -31,20 +32,12 @@ std::string aluminium_pulled(const SceneFolder& f, double force) {
                        "  \"loads\": [{\"group\": \"grip\", \"force\": [" + full_digits(force) + ", 0]}]"}});
 }
 
-// Runs the command line; its exit status, its stderr in `err`.
-int run(const std::string& args, const SceneFolder& f, std::string& err) {
-  const std::string path = (f.path / "err.txt").string();
-  const int raw = std::system((std::string(THINLAYER_CLI) + " " + args + " >/dev/null 2>" + path).c_str());
-  err = read_text_file(path);
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
-
 }  // namespace
 
 TEST(LoadRange, ANonsenseLoadIsWarnedAsBeyondSmallStrainNotAsAFreeSupport) {
   SceneFolder f;
   std::string err;
-  EXPECT_EQ(run("solve --scene " + aluminium_pulled(f, 30000), f, err), 0) << err;
+  EXPECT_EQ(run_cli("solve --scene " + aluminium_pulled(f, 30000), f, err), 0) << err;
   const std::size_t at = err.find("beyond small strain");
   ASSERT_NE(at, std::string::npos) << err;
   // The number: the adherent's largest principal strain, at least the membrane strain 0.43.
@@ -57,7 +50,7 @@ TEST(LoadRange, ANonsenseLoadIsWarnedAsBeyondSmallStrainNotAsAFreeSupport) {
 TEST(LoadRange, AnOrdinaryLoadIsNotWarned) {
   SceneFolder f;
   std::string err;
-  EXPECT_EQ(run("solve --scene " + aluminium_pulled(f, 100), f, err), 0) << err;
+  EXPECT_EQ(run_cli("solve --scene " + aluminium_pulled(f, 100), f, err), 0) << err;
   EXPECT_EQ(err.find("small strain"), std::string::npos) << err;
   EXPECT_EQ(err.find("support left free"), std::string::npos) << err;
 }
@@ -67,7 +60,7 @@ TEST(LoadRange, LimitModeRefusesAGlueTooThickByLayerModesRule) {
   const std::string scene = lap_with(f, {{"\"thickness\": 0.5", "\"thickness\": 3"}});
   for (const std::string mode : {"layer", "limit"}) {
     std::string err;
-    EXPECT_EQ(run("solve --scene " + scene + " --mode " + mode, f, err), 2) << mode << ": " << err;
+    EXPECT_EQ(run_cli("solve --scene " + scene + " --mode " + mode, f, err), 2) << mode << ": " << err;
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     EXPECT_NE(err.find("at most 1.25 mm"), std::string::npos) << mode << ": " << err;  // 12.5 mm / 10, by hand
   }
