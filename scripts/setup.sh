@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(cmake g++ make libeigen3-dev libsuitesparse-dev libblas-dev libgmsh-dev libhdf5-dev
+packages=(cmake g++ make ninja-build libeigen3-dev libsuitesparse-dev libblas-dev libgmsh-dev libhdf5-dev
           libsiconos-numerics-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-h5py
           libcli11-dev nlohmann-json3-dev libopenmpi-dev openmpi-bin libseccomp-dev libglpk-dev)
 missing=()
@@ -20,5 +20,10 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# Ninja on a new build folder: it compiles a library's files while the one it depends on is still
+# being built (Make waits for each library), which keeps both cores busy. A folder configured before
+# keeps its generator.
+generator=()
+[ -f build/CMakeCache.txt ] || generator=(-G Ninja)
+cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$(nproc)" --target thinlayer
