@@ -20,9 +20,9 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# Ninja on a new build folder: it compiles a library's files while the one it depends on is still
-# being built (Make waits for each library), which keeps both cores busy. A folder configured before
-# keeps its generator.
+# Ninja on a new build folder: a library's files may start before the library they use is archived,
+# where Make waits at the end of each library with a core idle. A folder configured before keeps its
+# generator.
 generator=()
 [ -f build/CMakeCache.txt ] || generator=(-G Ninja)
 cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null

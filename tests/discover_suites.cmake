@@ -2,7 +2,7 @@
 # link of thinlayer_tests). A suite runs in one process, as GoogleTest is made to: the executable's
 # start (the dynamic loader binding gmsh and OpenCASCADE, about 0.2 s of CPU) is paid once per suite
 # rather than once per test; a failure still names its test (`[  FAILED  ] Suite.Test` in the output
-# CTest prints), and `ctest -R Suite` or `thinlayer_tests --gtest_filter=Suite.Test` runs one alone.
+# CTest prints), and `ctest -R '^Suite$'` or `thinlayer_tests --gtest_filter=Suite.Test` runs one alone.
 #   -D EXECUTABLE=path/to/thinlayer_tests -D OUTPUT=path/to/suites.cmake [-D COSTS=Suite:seconds,...]
 # COSTS: the long suites' seconds, so that `ctest -j N` starts them first (CTest's COST property).
 cmake_minimum_required(VERSION 3.22)
