@@ -21,6 +21,10 @@ foreach(line IN LISTS lines)
     set(suite "${CMAKE_MATCH_1}")
     string(APPEND script "add_test([=[${suite}]=] [=[${EXECUTABLE}]=] [=[--gtest_filter=${suite}.*]=])\n")
     list(APPEND suites "${suite}")
+  elseif(NOT line MATCHES "^ " AND NOT line MATCHES "^Running main\\(\\) from " AND NOT line STREQUAL "")
+    # Neither a test (indented), a suite, nor gtest_main's banner: a suite this script cannot name
+    # would otherwise never run.
+    message(FATAL_ERROR "${EXECUTABLE} --gtest_list_tests: a line that is no suite: '${line}'")
   endif()
 endforeach()
 string(REPLACE "," ";" costs "${COSTS}")
